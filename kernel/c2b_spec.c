@@ -1,0 +1,622 @@
+#include "c2b_spec.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "c2b_expr.h"
+
+#define MAX_CONSTANTS 256
+#define LABEL_LEN 96
+
+/* Context of one boundary function: sign * d^p S/du^p at u = trim (primaries) or a
+ * v,t-expression (explicit boundary data). */
+typedef struct datum {
+    c2b_expr *e;     /* function of (u,) v, t */
+    c2b_expr *evv;   /* its second v-derivative */
+    double u;        /* trim parameter (ignored for boundary expressions) */
+    double sign;
+    double *samples; /* owned, 3 per row */
+    char label[LABEL_LEN];
+} datum;
+
+typedef struct forcing {
+    c2b_expr *e;
+    char label[LABEL_LEN];
+} forcing;
+
+struct c2b_spec {
+    c2b_problem pb;
+    datum data[C2B_NCOMP][2][C2B_MAX_N];
+    forcing force[C2B_NCOMP];
+    char *cnames[MAX_CONSTANTS];
+    double cvalues[MAX_CONSTANTS];
+    int nconst;
+    char name[128];
+};
+
+static double datum_fn(void *ctx, double v, double t)
+{
+    const datum *d = ctx;
+    return d->sign * c2b_expr_eval(d->e, d->u, v, t);
+}
+
+static double datum_vv(void *ctx, double v, double t)
+{
+    const datum *d = ctx;
+    return d->sign * c2b_expr_eval(d->evv, d->u, v, t);
+}
+
+static double force_fn(void *ctx, double u, double v, double t)
+{
+    const forcing *f = ctx;
+    return c2b_expr_eval(f->e, u, v, t);
+}
+
+void c2b_spec_destroy(c2b_spec *s)
+{
+    if (!s)
+        return;
+    for (int c = 0; c < C2B_NCOMP; c++) {
+        for (int side = 0; side < 2; side++)
+            for (int p = 0; p < C2B_MAX_N; p++) {
+                c2b_expr_destroy(s->data[c][side][p].e);
+                c2b_expr_destroy(s->data[c][side][p].evv);
+                free(s->data[c][side][p].samples);
+            }
+        c2b_expr_destroy(s->force[c].e);
+    }
+    for (int i = 0; i < s->nconst; i++)
+        free(s->cnames[i]);
+    free(s);
+}
+
+const c2b_problem *c2b_spec_problem(const c2b_spec *s) { return &s->pb; }
+const char *c2b_spec_name(const c2b_spec *s) { return s->name; }
+
+/* ---- helpers that name the field ----------------------------------------------------- */
+
+static c2b_status want_number(const cJSON *j, const char *field, double *out, c2b_error *err)
+{
+    if (!cJSON_IsNumber(j))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected a number", field);
+    if (!isfinite(j->valuedouble))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: must be finite", field);
+    *out = j->valuedouble;
+    return C2B_OK;
+}
+
+static c2b_status want_numbers(const cJSON *j, const char *field, int n, double *out,
+                               c2b_error *err)
+{
+    if (!cJSON_IsArray(j) || cJSON_GetArraySize(j) != n)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an array of %d numbers", field, n);
+    int i = 0;
+    for (const cJSON *x = j->child; x; x = x->next, i++) {
+        char f[LABEL_LEN];
+        snprintf(f, sizeof f, "%s[%d]", field, i);
+        c2b_status st = want_number(x, f, &out[i], err);
+        if (st)
+            return st;
+    }
+    return C2B_OK;
+}
+
+static c2b_status check_keys(const cJSON *obj, const char *where, const char *const *allowed,
+                             c2b_error *err)
+{
+    for (const cJSON *x = obj->child; x; x = x->next) {
+        int ok = 0;
+        for (const char *const *a = allowed; *a && !ok; a++)
+            ok = !strcmp(*a, x->string);
+        if (!ok) {
+            char list[512] = "";
+            size_t used = 0;
+            for (const char *const *a = allowed; *a && used < sizeof list; a++)
+                used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
+                                         a == allowed ? "" : ", ", *a);
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s%sunknown key '%s' (allowed: %s)", where,
+                                 *where ? ": " : "", x->string, list);
+        }
+    }
+    return C2B_OK;
+}
+
+static c2b_constants constants_of(const c2b_spec *s)
+{
+    c2b_constants c = {s->nconst, (const char *const *)s->cnames, s->cvalues};
+    return c;
+}
+
+static c2b_status make_expr(c2b_spec *s, const cJSON *j, const char *field, int allowed,
+                            c2b_expr **out, c2b_error *err)
+{
+    if (cJSON_IsNumber(j)) {
+        char buf[64];
+        if (!isfinite(j->valuedouble))
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: must be finite", field);
+        snprintf(buf, sizeof buf, "%.17g", j->valuedouble);
+        return c2b_expr_create(buf, NULL, allowed, out, err);
+    }
+    if (!cJSON_IsString(j))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an expression string", field);
+    c2b_constants cs = constants_of(s);
+    c2b_status st = c2b_expr_create(j->valuestring, &cs, allowed, out, err);
+    if (st)
+        c2b_error_prefix(err, "%s: ", field);
+    return st;
+}
+
+/* ---- sections ---------------------------------------------------------------------- */
+
+static c2b_status parse_constants(c2b_spec *s, const cJSON *j, c2b_error *err)
+{
+    if (!j)
+        return C2B_OK;
+    if (!cJSON_IsObject(j))
+        return c2b_error_set(err, C2B_ERR_SPEC, "constants: expected an object of numbers");
+    for (const cJSON *x = j->child; x; x = x->next) {
+        char f[LABEL_LEN + 32];
+        snprintf(f, sizeof f, "constants.%s", x->string);
+        const char *nm = x->string;
+        int valid = (nm[0] == '_' || (nm[0] >= 'a' && nm[0] <= 'z') || (nm[0] >= 'A' && nm[0] <= 'Z'));
+        for (const char *p = nm; *p && valid; p++)
+            valid = *p == '_' || (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
+                    (*p >= '0' && *p <= '9');
+        if (!valid)
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: not a valid identifier", f);
+        if (!strcmp(nm, "u") || !strcmp(nm, "v") || !strcmp(nm, "t") || !strcmp(nm, "pi") ||
+            !strcmp(nm, "e"))
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: '%s' is reserved (u, v, t, pi, e)", f, nm);
+        if (s->nconst == MAX_CONSTANTS)
+            return c2b_error_set(err, C2B_ERR_LIMIT, "constants: more than %d", MAX_CONSTANTS);
+        double val = 0;
+        c2b_status st = want_number(x, f, &val, err);
+        if (st)
+            return st;
+        s->cnames[s->nconst] = malloc(strlen(nm) + 1);
+        if (!s->cnames[s->nconst])
+            return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        strcpy(s->cnames[s->nconst], nm);
+        s->cvalues[s->nconst++] = val;
+    }
+    return C2B_OK;
+}
+
+static c2b_status parse_shape(c2b_spec *s, const cJSON *j, c2b_error *err)
+{
+    int ns = c2b_continuity_nshape(s->pb.continuity);
+    if (!j)
+        return C2B_OK;
+    if (cJSON_IsArray(j)) {
+        c2b_status st = want_numbers(j, "shape", ns, s->pb.shape[0], err);
+        if (st)
+            return c2b_error_prefix(err, "(%s takes %d: %s%s%s%s%s%s%s%s%s) ",
+                                    c2b_continuity_name(s->pb.continuity), ns,
+                                    c2b_continuity_param_name(s->pb.continuity, 0), ", ",
+                                    c2b_continuity_param_name(s->pb.continuity, 1), ", ",
+                                    c2b_continuity_param_name(s->pb.continuity, 2),
+                                    ns > 3 ? ", " : "",
+                                    ns > 3 ? c2b_continuity_param_name(s->pb.continuity, 3) : "",
+                                    ns > 4 ? ", " : "",
+                                    ns > 4 ? c2b_continuity_param_name(s->pb.continuity, 4) : "");
+        memcpy(s->pb.shape[1], s->pb.shape[0], sizeof s->pb.shape[0]);
+        memcpy(s->pb.shape[2], s->pb.shape[0], sizeof s->pb.shape[0]);
+        return C2B_OK;
+    }
+    if (cJSON_IsObject(j)) {
+        static const char *const keys[] = {"x", "y", "z", NULL};
+        c2b_status st = check_keys(j, "shape", keys, err);
+        if (st)
+            return st;
+        for (int c = 0; c < C2B_NCOMP; c++) {
+            char f[16];
+            snprintf(f, sizeof f, "shape.%s", keys[c]);
+            const cJSON *x = cJSON_GetObjectItemCaseSensitive(j, keys[c]);
+            if (!x)
+                return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing (give x, y and z)", f);
+            st = want_numbers(x, f, ns, s->pb.shape[c], err);
+            if (st)
+                return st;
+        }
+        return C2B_OK;
+    }
+    return c2b_error_set(err, C2B_ERR_SPEC,
+                         "shape: expected an array of %d numbers or {\"x\": [...], \"y\": [...], \"z\": [...]}",
+                         ns);
+}
+
+/* Bind datum (c, side, p) to an expression context. */
+static c2b_status bind_expr_datum(c2b_spec *s, int c, int side, int p, c2b_expr *e, double u,
+                                  double sign, c2b_error *err)
+{
+    datum *d = &s->data[c][side][p];
+    d->e = e;
+    d->u = u;
+    d->sign = sign;
+    c2b_status st = c2b_expr_derivative(e, 'v', 2, &d->evv, err);
+    if (st)
+        return c2b_error_prefix(err, "%s: ", d->label);
+    c2b_bfunc *bf = &s->pb.data[c][side][p];
+    bf->fn = datum_fn;
+    bf->fn_vv = datum_vv;
+    bf->ctx = d;
+    bf->time_dependent = c2b_expr_depends(e, 't');
+    bf->label = d->label;
+    return C2B_OK;
+}
+
+static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error *err)
+{
+    char where[LABEL_LEN];
+    snprintf(where, sizeof where, "primaries[%d]", side);
+    if (!cJSON_IsObject(j))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an object", where);
+    static const char *const keys[] = {"surface", "trim_u", "direction", "name", NULL};
+    c2b_status st = check_keys(j, where, keys, err);
+    if (st)
+        return st;
+    const cJSON *surf = cJSON_GetObjectItemCaseSensitive(j, "surface");
+    const cJSON *tj = cJSON_GetObjectItemCaseSensitive(j, "trim_u");
+    const cJSON *dj = cJSON_GetObjectItemCaseSensitive(j, "direction");
+    if (!surf)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s.surface: missing", where);
+    if (!tj)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s.trim_u: missing", where);
+    if (!cJSON_IsArray(surf) || cJSON_GetArraySize(surf) != 3)
+        return c2b_error_set(err, C2B_ERR_SPEC,
+                             "%s.surface: expected 3 expressions [x, y, z] in u, v, t", where);
+    char f[LABEL_LEN];
+    snprintf(f, sizeof f, "%s.trim_u", where);
+    double tu = 0, dir = 1.0;
+    st = want_number(tj, f, &tu, err);
+    if (st)
+        return st;
+    if (dj) {
+        snprintf(f, sizeof f, "%s.direction", where);
+        st = want_number(dj, f, &dir, err);
+        if (st)
+            return st;
+        if (dir != 1.0 && dir != -1.0)
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: must be 1 or -1, got %g", f, dir);
+    }
+    int n = c2b_continuity_n(s->pb.continuity);
+    int c = 0;
+    for (const cJSON *x = surf->child; x; x = x->next, c++) {
+        snprintf(f, sizeof f, "%s.surface[%d]", where, c);
+        c2b_expr *e = NULL;
+        st = make_expr(s, x, f, C2B_EXPR_U | C2B_EXPR_V | C2B_EXPR_T, &e, err);
+        if (st)
+            return st;
+        /* C_p = direction^p d^p S / du^p at u = trim_u (thesis sign convention) */
+        double sign = 1.0;
+        for (int p = 0; p < n; p++) {
+            c2b_expr *dp = NULL;
+            st = c2b_expr_derivative(e, 'u', p, &dp, err);
+            if (st) {
+                c2b_expr_destroy(e);
+                return c2b_error_prefix(err, "%s: ", f);
+            }
+            snprintf(s->data[c][side][p].label, LABEL_LEN, "%s (d^%d/du^%d at u=%g)", f, p, p, tu);
+            st = bind_expr_datum(s, c, side, p, dp, tu, sign, err);
+            if (st) {
+                c2b_expr_destroy(e);
+                return st;
+            }
+            sign *= dir;
+        }
+        c2b_expr_destroy(e);
+    }
+    return C2B_OK;
+}
+
+static c2b_status parse_boundary_row(c2b_spec *s, const cJSON *row, int side, int p,
+                                     const char *where, c2b_error *err)
+{
+    if (cJSON_IsArray(row)) {
+        if (cJSON_GetArraySize(row) != 3)
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "%s: expected 3 expressions [x, y, z] in v and t, got %d",
+                                 where, cJSON_GetArraySize(row));
+        int c = 0;
+        for (const cJSON *x = row->child; x; x = x->next, c++) {
+            char f[LABEL_LEN];
+            snprintf(f, sizeof f, "%s[%d]", where, c);
+            c2b_expr *e = NULL;
+            c2b_status st = make_expr(s, x, f, C2B_EXPR_V | C2B_EXPR_T, &e, err);
+            if (st)
+                return st;
+            snprintf(s->data[c][side][p].label, LABEL_LEN, "%s", f);
+            st = bind_expr_datum(s, c, side, p, e, 0.0, 1.0, err);
+            if (st)
+                return st;
+        }
+        return C2B_OK;
+    }
+    if (cJSON_IsObject(row)) {
+        static const char *const keys[] = {"samples", NULL};
+        c2b_status st = check_keys(row, where, keys, err);
+        if (st)
+            return st;
+        const cJSON *sm = cJSON_GetObjectItemCaseSensitive(row, "samples");
+        if (!cJSON_IsArray(sm))
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s.samples: expected an array of [x, y, z]", where);
+        int ns = cJSON_GetArraySize(sm);
+        int nmin = s->pb.dom.periodic ? 4 : 7;
+        if (ns < nmin)
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "%s.samples: %d samples given, at least %d are needed (%s trimline)",
+                                 where, ns, nmin, s->pb.dom.periodic ? "periodic" : "open");
+        double *buf = malloc((size_t)ns * 3 * sizeof *buf);
+        if (!buf)
+            return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        int i = 0;
+        for (const cJSON *x = sm->child; x; x = x->next, i++) {
+            char f[LABEL_LEN + 16];
+            snprintf(f, sizeof f, "%s.samples[%d]", where, i);
+            st = want_numbers(x, f, 3, buf + 3 * i, err);
+            if (st) {
+                free(buf);
+                return st;
+            }
+        }
+        for (int c = 0; c < C2B_NCOMP; c++) {
+            datum *d = &s->data[c][side][p];
+            snprintf(d->label, LABEL_LEN, "%s.samples (component %c)", where, "xyz"[c]);
+            c2b_bfunc *bf = &s->pb.data[c][side][p];
+            bf->samples = buf + c;
+            bf->n_samples = ns;
+            bf->stride = 3;
+            bf->label = d->label;
+        }
+        s->data[0][side][p].samples = buf; /* owner */
+        return C2B_OK;
+    }
+    return c2b_error_set(err, C2B_ERR_SPEC,
+                         "%s: expected [x, y, z] expressions or {\"samples\": [[x, y, z], ...]}",
+                         where);
+}
+
+static c2b_status parse_boundary(c2b_spec *s, const cJSON *j, c2b_error *err)
+{
+    if (!cJSON_IsObject(j))
+        return c2b_error_set(err, C2B_ERR_SPEC, "boundary: expected {\"u0\": [...], \"u1\": [...]}");
+    static const char *const keys[] = {"u0", "u1", NULL};
+    c2b_status st = check_keys(j, "boundary", keys, err);
+    if (st)
+        return st;
+    int n = c2b_continuity_n(s->pb.continuity);
+    static const char *const rows[] = {"S", "S_u", "S_uu", "S_uuu"};
+    for (int side = 0; side < 2; side++) {
+        const cJSON *sj = cJSON_GetObjectItemCaseSensitive(j, keys[side]);
+        if (!sj)
+            return c2b_error_set(err, C2B_ERR_SPEC, "boundary.%s: missing", keys[side]);
+        if (!cJSON_IsArray(sj) || cJSON_GetArraySize(sj) != n) {
+            char list[64] = "";
+            for (int p = 0; p < n; p++) {
+                strcat(list, p ? ", " : "");
+                strcat(list, rows[p]);
+            }
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "boundary.%s: %s needs %d rows (%s), got %d",
+                                 keys[side], c2b_continuity_name(s->pb.continuity), n, list,
+                                 cJSON_IsArray(sj) ? cJSON_GetArraySize(sj) : 0);
+        }
+        int p = 0;
+        for (const cJSON *row = sj->child; row; row = row->next, p++) {
+            char where[LABEL_LEN];
+            snprintf(where, sizeof where, "boundary.%s[%d]", keys[side], p);
+            st = parse_boundary_row(s, row, side, p, where, err);
+            if (st)
+                return st;
+        }
+    }
+    return C2B_OK;
+}
+
+static c2b_status parse_force(c2b_spec *s, const cJSON *j, c2b_error *err)
+{
+    if (!cJSON_IsArray(j) || cJSON_GetArraySize(j) != 3)
+        return c2b_error_set(err, C2B_ERR_SPEC, "force: expected 3 expressions [Fx, Fy, Fz] in u, v, t");
+    int c = 0;
+    for (const cJSON *x = j->child; x; x = x->next, c++) {
+        forcing *fo = &s->force[c];
+        snprintf(fo->label, LABEL_LEN, "force[%d]", c);
+        c2b_status st = make_expr(s, x, fo->label, C2B_EXPR_U | C2B_EXPR_V | C2B_EXPR_T, &fo->e, err);
+        if (st)
+            return st;
+        /* An identically zero force is no force: skip it. */
+        if (!c2b_expr_depends(fo->e, 'u') && !c2b_expr_depends(fo->e, 'v') &&
+            !c2b_expr_depends(fo->e, 't') && c2b_expr_eval(fo->e, 0, 0, 0) == 0.0)
+            continue;
+        s->pb.force[c].fn = force_fn;
+        s->pb.force[c].ctx = fo;
+        s->pb.force[c].time_dependent = c2b_expr_depends(fo->e, 't');
+        s->pb.force[c].label = fo->label;
+    }
+    return C2B_OK;
+}
+
+static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
+{
+    if (!cJSON_IsObject(root))
+        return c2b_error_set(err, C2B_ERR_SPEC, "spec: the top level must be a JSON object");
+    static const char *const keys[] = {"name", "description", "source", "continuity", "shape",
+                                       "v_range", "periodic", "constants", "time", "primaries",
+                                       "boundary", "force", "tolerance", NULL};
+    c2b_status st = check_keys(root, "", keys, err);
+    if (st)
+        return st;
+    const cJSON *j;
+    for (int i = 0; i < 3; i++) {
+        j = cJSON_GetObjectItemCaseSensitive(root, keys[i]);
+        if (j && !cJSON_IsString(j))
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected a string", keys[i]);
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "name");
+    if (j)
+        snprintf(s->name, sizeof s->name, "%s", j->valuestring);
+
+    j = cJSON_GetObjectItemCaseSensitive(root, "continuity");
+    if (j) {
+        if (!cJSON_IsString(j))
+            return c2b_error_set(err, C2B_ERR_SPEC, "continuity: expected \"C1\", \"C2\", \"C3\" or \"ODE\"");
+        const char *v = j->valuestring;
+        if (!strcmp(v, "C1"))
+            s->pb.continuity = C2B_C1;
+        else if (!strcmp(v, "C2"))
+            s->pb.continuity = C2B_C2;
+        else if (!strcmp(v, "C3"))
+            s->pb.continuity = C2B_C3;
+        else if (!strcmp(v, "ODE"))
+            s->pb.continuity = C2B_ODE;
+        else
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "continuity: '%s' is not one of C1, C2, C3, ODE", v);
+    }
+    st = parse_shape(s, cJSON_GetObjectItemCaseSensitive(root, "shape"), err);
+    if (st)
+        return st;
+    j = cJSON_GetObjectItemCaseSensitive(root, "v_range");
+    if (j) {
+        double vr[2];
+        st = want_numbers(j, "v_range", 2, vr, err);
+        if (st)
+            return st;
+        if (!(vr[1] > vr[0]))
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "v_range: [%g, %g] has zero or negative length", vr[0], vr[1]);
+        s->pb.dom.v0 = vr[0];
+        s->pb.dom.v1 = vr[1];
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "periodic");
+    if (j) {
+        if (!cJSON_IsBool(j))
+            return c2b_error_set(err, C2B_ERR_SPEC, "periodic: expected true or false");
+        s->pb.dom.periodic = cJSON_IsTrue(j);
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "time");
+    if (j && (st = want_number(j, "time", &s->pb.time, err)))
+        return st;
+    j = cJSON_GetObjectItemCaseSensitive(root, "tolerance");
+    if (j) {
+        double tol = 0;
+        if ((st = want_number(j, "tolerance", &tol, err)))
+            return st;
+        if (!(tol > 0 && tol < 1))
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "tolerance: relative truncation tolerance must be in (0, 1), got %g", tol);
+        s->pb.tol.truncation_rel = tol;
+    }
+    st = parse_constants(s, cJSON_GetObjectItemCaseSensitive(root, "constants"), err);
+    if (st)
+        return st;
+    const cJSON *prim = cJSON_GetObjectItemCaseSensitive(root, "primaries");
+    const cJSON *bnd = cJSON_GetObjectItemCaseSensitive(root, "boundary");
+    if (prim && bnd)
+        return c2b_error_set(err, C2B_ERR_SPEC, "spec: give either 'primaries' or 'boundary', not both");
+    if (!prim && !bnd)
+        return c2b_error_set(err, C2B_ERR_SPEC, "spec: missing 'primaries' (or explicit 'boundary' data)");
+    if (prim) {
+        if (!cJSON_IsArray(prim) || cJSON_GetArraySize(prim) != 2)
+            return c2b_error_set(err, C2B_ERR_SPEC, "primaries: expected an array of exactly 2 primaries");
+        int side = 0;
+        for (const cJSON *x = prim->child; x; x = x->next, side++)
+            if ((st = parse_primary(s, x, side, err)))
+                return st;
+    } else if ((st = parse_boundary(s, bnd, err))) {
+        return st;
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "force");
+    if (j && (st = parse_force(s, j, err)))
+        return st;
+    return C2B_OK;
+}
+
+c2b_status c2b_spec_parse(const char *json, size_t len, c2b_spec **out, c2b_error *err)
+{
+    if (!json || !out)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_spec_parse: NULL argument");
+    *out = NULL;
+    if (len > (size_t)C2B_SPEC_MAX_BYTES)
+        return c2b_error_set(err, C2B_ERR_LIMIT, "spec: %zu bytes exceeds the limit of %ld", len,
+                             C2B_SPEC_MAX_BYTES);
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithLengthOpts(json, len, &end, 0);
+    if (!root) {
+        int line = 1, col = 1;
+        const char *stop = end ? end : json;
+        for (const char *p = json; p < stop && p < json + len; p++) {
+            if (*p == '\n') {
+                line++;
+                col = 1;
+            } else {
+                col++;
+            }
+        }
+        return c2b_error_set(err, C2B_ERR_SPEC, "spec: malformed JSON near line %d, column %d",
+                             line, col);
+    }
+    c2b_spec *s = calloc(1, sizeof *s);
+    if (!s) {
+        cJSON_Delete(root);
+        return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+    }
+    s->pb = c2b_problem_default();
+    c2b_status st = parse_root(s, root, err);
+    cJSON_Delete(root);
+    if (st) {
+        c2b_spec_destroy(s);
+        return st;
+    }
+    *out = s;
+    return C2B_OK;
+}
+
+c2b_status c2b_spec_load(const char *path, c2b_spec **out, c2b_error *err)
+{
+    if (!path || !out)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_spec_load: NULL argument");
+    FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
+    if (!f)
+        return c2b_error_set(err, C2B_ERR_IO, "%s: cannot open spec file", path);
+    size_t cap = 1 << 16, len = 0;
+    char *buf = malloc(cap);
+    c2b_status st = C2B_OK;
+    while (buf) {
+        if (len == cap) {
+            if (cap >= (size_t)C2B_SPEC_MAX_BYTES) {
+                st = c2b_error_set(err, C2B_ERR_LIMIT, "%s: larger than %ld bytes", path,
+                                   C2B_SPEC_MAX_BYTES);
+                break;
+            }
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+        size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0)
+            break;
+    }
+    if (!st && !buf)
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory reading %s", path);
+    if (!st && ferror(f))
+        st = c2b_error_set(err, C2B_ERR_IO, "%s: read error", path);
+    if (f != stdin)
+        fclose(f);
+    if (!st) {
+        st = c2b_spec_parse(buf, len, out, err);
+        if (st)
+            c2b_error_prefix(err, "%s: ", path);
+    }
+    free(buf);
+    return st;
+}

@@ -1,0 +1,54 @@
+/**
+ * @file c2b_spec.h
+ * JSON blend specs (format in README.md, "Spec format"), parsed with cJSON; the
+ * expressions with libmatheval (c2b_expr.h). A spec owns its expressions and samples
+ * and exposes a ::c2b_problem that refers to them, so a spec must outlive every blend
+ * created from its problem.
+ *
+ * Every error names the field: `primaries[1].surface[2]: unknown identifier 'h4'`.
+ */
+#ifndef C2B_SPEC_H
+#define C2B_SPEC_H
+
+#include <stddef.h>
+
+#include "c2b_error.h"
+#include "c2b_problem.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct c2b_spec c2b_spec;
+
+/** Largest spec file accepted, in bytes. */
+#define C2B_SPEC_MAX_BYTES (64L * 1024 * 1024)
+
+/**
+ * Parse a spec from `len` bytes of JSON text (need not be NUL-terminated).
+ * @return C2B_OK; C2B_ERR_SPEC naming the field for malformed JSON (with the line),
+ *         unknown or missing keys, wrong types, wrong row counts, unknown identifiers,
+ *         non-finite numbers and zero-length ranges; C2B_ERR_LIMIT for oversized
+ *         input; C2B_ERR_NOMEM.
+ */
+c2b_status c2b_spec_parse(const char *json, size_t len, c2b_spec **out, c2b_error *err);
+
+/**
+ * Read and parse a spec file ("-" reads standard input).
+ * @return as c2b_spec_parse(), plus C2B_ERR_IO when the file cannot be read.
+ */
+c2b_status c2b_spec_load(const char *path, c2b_spec **out, c2b_error *err);
+
+/** Free a spec. NULL-safe. Blends made from its problem must be destroyed first. */
+void c2b_spec_destroy(c2b_spec *s);
+
+/** The problem described by the spec (owned by the spec). */
+const c2b_problem *c2b_spec_problem(const c2b_spec *s);
+
+/** The spec's "name", or "" when absent. */
+const char *c2b_spec_name(const c2b_spec *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,665 @@
+#include "c2b_vseries.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "c2b_constants.h"
+
+/* Structure checks use 33 points with an irrational-looking spacing, so that no
+ * low-frequency mode can hide in their zeros. */
+#define NCHECK 33
+#define CHECK_OFFSET 0.0123
+#define CHECK_STEP 0.0302
+
+const char *c2b_vmethod_name(c2b_vmethod m)
+{
+    static const char *const names[] = {"zero", "polynomial", "mode", "fft", "dst"};
+    return (unsigned)m < 5 ? names[m] : "?";
+}
+
+const char *c2b_vkind_name(c2b_vkind k)
+{
+    static const char *const names[] = {"pow", "cos", "sin", "expp", "expm"};
+    return (unsigned)k < 5 ? names[k] : "?";
+}
+
+double c2b_vfunc_beta(const c2b_vfunc *f)
+{
+    switch (f->kind) {
+    case C2B_VF_POW: return 0.0;
+    case C2B_VF_COS:
+    case C2B_VF_SIN: return -f->omega * f->omega;
+    case C2B_VF_EXPP:
+    case C2B_VF_EXPM: return f->omega * f->omega;
+    }
+    return 0.0;
+}
+
+void c2b_vfunc_eval(const c2b_vfunc *f, double s, double L, int maxd, double *out)
+{
+    double w = f->omega;
+    switch (f->kind) {
+    case C2B_VF_POW:
+        for (int q = 0; q <= maxd; q++) {
+            int m = f->power;
+            if (q > m) {
+                out[q] = 0.0;
+                continue;
+            }
+            double c = 1.0;
+            for (int j = 0; j < q; j++)
+                c *= (double)(m - j);
+            double p = 1.0;
+            for (int j = 0; j < m - q; j++)
+                p *= s;
+            out[q] = c * p;
+        }
+        return;
+    case C2B_VF_COS:
+    case C2B_VF_SIN: {
+        double c = cos(w * s), sn = sin(w * s);
+        /* derivatives of cos: cos, -w sin, -w^2 cos, w^3 sin; of sin: sin, w cos, -w^2 sin, -w^3 cos */
+        double wp = 1.0;
+        for (int q = 0; q <= maxd; q++) {
+            int ph = (q + (f->kind == C2B_VF_SIN ? 3 : 0)) % 4; /* sin = cos shifted by -pi/2 */
+            double v = ph == 0 ? c : ph == 1 ? -sn : ph == 2 ? -c : sn;
+            out[q] = wp * v;
+            wp *= w;
+        }
+        return;
+    }
+    case C2B_VF_EXPP:
+    case C2B_VF_EXPM: {
+        double sg = f->kind == C2B_VF_EXPP ? 1.0 : -1.0;
+        double e = f->kind == C2B_VF_EXPP ? exp(w * (s - L)) : exp(-w * s);
+        double wp = 1.0;
+        for (int q = 0; q <= maxd; q++) {
+            out[q] = wp * e;
+            wp *= sg * w;
+        }
+        return;
+    }
+    }
+}
+
+int c2b_vfunc_same(const c2b_vfunc *a, const c2b_vfunc *b)
+{
+    if (a->kind != b->kind)
+        return 0;
+    if (a->kind == C2B_VF_POW)
+        return a->power == b->power;
+    return fabs(a->omega - b->omega) <= 1e-13 * fmax(a->omega, b->omega);
+}
+
+void c2b_vseries_clear(c2b_vseries *s)
+{
+    if (!s)
+        return;
+    free(s->terms);
+    memset(s, 0, sizeof *s);
+}
+
+static int add_term(c2b_vseries *s, c2b_vkind kind, int power, double omega, double amp)
+{
+    if (s->n == s->cap) {
+        int cap = s->cap ? 2 * s->cap : 16;
+        c2b_vterm *t = realloc(s->terms, (size_t)cap * sizeof *t);
+        if (!t)
+            return -1;
+        s->terms = t;
+        s->cap = cap;
+    }
+    c2b_vterm *t = &s->terms[s->n++];
+    t->f.kind = kind;
+    t->f.power = power;
+    t->f.omega = omega;
+    t->amp = amp;
+    return 0;
+}
+
+void c2b_vseries_eval(const c2b_vseries *s, const c2b_vdomain *dom, double v, int maxd,
+                      double *out)
+{
+    double L = dom->v1 - dom->v0, tmp[4];
+    for (int q = 0; q <= maxd; q++)
+        out[q] = 0.0;
+    for (int i = 0; i < s->n; i++) {
+        c2b_vfunc_eval(&s->terms[i].f, v - dom->v0, L, maxd, tmp);
+        for (int q = 0; q <= maxd; q++)
+            out[q] += s->terms[i].amp * tmp[q];
+    }
+}
+
+/* Evaluate f and insist on a finite value. */
+static c2b_status sample(c2b_vt_fn f, void *ctx, double v, double t, double *out,
+                         c2b_error *err)
+{
+    double y = f(ctx, v, t);
+    *out = y;
+    if (!isfinite(y))
+        return c2b_error_set(err, C2B_ERR_SPEC, "value is not finite (%g) at v=%.17g, t=%.17g",
+                             y, v, t);
+    return C2B_OK;
+}
+
+/* Interpolating polynomial (monomials in x = s/L in [0,1]) through (x_j, y_j). */
+static void interp_monomial(int np, const double *x, const double *y, double *coef)
+{
+    double dd[64];
+    memcpy(dd, y, (size_t)np * sizeof *dd);
+    for (int k = 1; k < np; k++)
+        for (int i = np - 1; i >= k; i--)
+            dd[i] = (dd[i] - dd[i - 1]) / (x[i] - x[i - k]);
+    /* Newton form to monomials, innermost first. */
+    for (int i = 0; i < np; i++)
+        coef[i] = 0.0;
+    for (int k = np - 1; k >= 0; k--) {
+        for (int i = np - 1; i >= 1; i--)
+            coef[i] = coef[i - 1] - x[k] * coef[i];
+        coef[0] = -x[k] * coef[0] + dd[k];
+    }
+}
+
+static double horner(const double *c, int deg, double x)
+{
+    double a = 0.0;
+    for (int i = deg; i >= 0; i--)
+        a = a * x + c[i];
+    return a;
+}
+
+/* Exact structure: polynomial of low degree. */
+static c2b_status try_polynomial(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, double t,
+                                 const c2b_tolerances *tol, const double *xc,
+                                 const double *yc, double scale, c2b_vseries *out,
+                                 int *found, c2b_error *err)
+{
+    double L = dom->v1 - dom->v0;
+    *found = 0;
+    for (int d = 0; d <= tol->max_poly_degree; d++) {
+        int np = d + 1;
+        double x[64], y[64], coef[64];
+        for (int j = 0; j < np; j++) {
+            x[j] = np == 1 ? 0.5 : 0.5 - 0.5 * cos(C2B_PI * (2 * j + 1) / (2.0 * np));
+            c2b_status st = sample(f, ctx, dom->v0 + x[j] * L, t, &y[j], err);
+            if (st)
+                return st;
+        }
+        interp_monomial(np, x, y, coef);
+        double e = 0.0;
+        for (int i = 0; i < NCHECK; i++)
+            e = fmax(e, fabs(horner(coef, d, xc[i]) - yc[i]));
+        out->n_samples += np;
+        if (e <= tol->structure_rel * scale) {
+            double Lm = 1.0;
+            for (int m = 0; m <= d; m++) {
+                if (coef[m] != 0.0 && add_term(out, C2B_VF_POW, m, 0.0, coef[m] / Lm))
+                    return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+                Lm *= L;
+            }
+            out->method = C2B_VM_POLY;
+            out->err_abs = e;
+            *found = 1;
+            return C2B_OK;
+        }
+    }
+    return C2B_OK;
+}
+
+/* Exact structure: f'' = beta f, detected from the three-term recurrence
+ * f(s+h) + f(s-h) = 2 c f(s) on uniform samples (c = cos(omega h) or cosh(omega h)). */
+static c2b_status try_mode(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, double t,
+                           const c2b_tolerances *tol, const double *xc, const double *yc,
+                           double scale, c2b_vseries *out, int *found, c2b_error *err)
+{
+    double L = dom->v1 - dom->v0, h = CHECK_STEP * L;
+    *found = 0;
+    double num = 0, den = 0;
+    for (int i = 1; i < NCHECK - 1; i++) {
+        num += yc[i] * (yc[i - 1] + yc[i + 1]);
+        den += 2 * yc[i] * yc[i];
+    }
+    if (den == 0)
+        return C2B_OK;
+    double c = num / den, res = 0;
+    for (int i = 1; i < NCHECK - 1; i++)
+        res = fmax(res, fabs(yc[i - 1] + yc[i + 1] - 2 * c * yc[i]));
+    if (res > tol->structure_rel * scale || c < -1 || c == 1)
+        return C2B_OK;
+    int trig = c < 1;
+    double w = trig ? acos(c) / h : acosh(c) / h;
+    c2b_vfunc fa = {trig ? C2B_VF_COS : C2B_VF_EXPP, 0, w};
+    c2b_vfunc fb = {trig ? C2B_VF_SIN : C2B_VF_EXPM, 0, w};
+    /* Least squares for the two amplitudes on the check points. */
+    double aa = 0, ab = 0, bb = 0, ay = 0, by = 0;
+    for (int i = 0; i < NCHECK; i++) {
+        double va, vb;
+        c2b_vfunc_eval(&fa, xc[i] * L, L, 0, &va);
+        c2b_vfunc_eval(&fb, xc[i] * L, L, 0, &vb);
+        aa += va * va;
+        ab += va * vb;
+        bb += vb * vb;
+        ay += va * yc[i];
+        by += vb * yc[i];
+    }
+    double det = aa * bb - ab * ab;
+    if (!(fabs(det) > 1e-14 * aa * bb))
+        return C2B_OK;
+    double A = (ay * bb - by * ab) / det, B = (aa * by - ab * ay) / det;
+    /* Verify at fresh points. */
+    double e = 0;
+    for (int i = 0; i < 16; i++) {
+        double x = (i + 0.5) / 16.0, y, va, vb;
+        c2b_status st = sample(f, ctx, dom->v0 + x * L, t, &y, err);
+        if (st)
+            return st;
+        c2b_vfunc_eval(&fa, x * L, L, 0, &va);
+        c2b_vfunc_eval(&fb, x * L, L, 0, &vb);
+        e = fmax(e, fabs(A * va + B * vb - y));
+    }
+    out->n_samples += 16;
+    if (e > 10 * tol->structure_rel * scale)
+        return C2B_OK;
+    if ((A != 0 && add_term(out, fa.kind, 0, w, A)) || (B != 0 && add_term(out, fb.kind, 0, w, B)))
+        return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+    out->method = C2B_VM_MODE;
+    out->err_abs = e;
+    *found = 1;
+    return C2B_OK;
+}
+
+/* Periodic: amplitudes from n samples (n even or odd), dropping small ones.
+ * spec: fftw output buffer of n/2+1. Terms appended to out. */
+static int fft_terms(const fftw_complex *X, int n, double L, double drop, c2b_vseries *out)
+{
+    double a0 = X[0][0] / n;
+    if (fabs(a0) > drop && add_term(out, C2B_VF_POW, 0, 0.0, a0))
+        return -1;
+    for (int k = 1; k <= n / 2; k++) {
+        int nyq = 2 * k == n;
+        double a = (nyq ? 1.0 : 2.0) * X[k][0] / n, b = nyq ? 0.0 : -2.0 * X[k][1] / n;
+        double w = 2.0 * C2B_PI * k / L;
+        if (fabs(a) > drop && add_term(out, C2B_VF_COS, 0, w, a))
+            return -1;
+        if (fabs(b) > drop && add_term(out, C2B_VF_SIN, 0, w, b))
+            return -1;
+    }
+    return 0;
+}
+
+/* Values of a periodic series (no POW terms except the constant) at n points
+ * s_j = j L / n, using an inverse real FFT. */
+static int periodic_values(const c2b_vseries *s, double L, int n, double *vals)
+{
+    fftw_complex *Y = fftw_alloc_complex((size_t)n / 2 + 1);
+    if (!Y)
+        return -1;
+    memset(Y, 0, sizeof(fftw_complex) * ((size_t)n / 2 + 1));
+    for (int i = 0; i < s->n; i++) {
+        const c2b_vterm *t = &s->terms[i];
+        if (t->f.kind == C2B_VF_POW) {
+            Y[0][0] += t->amp;
+            continue;
+        }
+        int k = (int)lround(t->f.omega * L / (2.0 * C2B_PI));
+        if (k > n / 2)
+            continue;
+        double f = 2 * k == n ? 1.0 : 0.5;
+        if (t->f.kind == C2B_VF_COS)
+            Y[k][0] += f * t->amp;
+        else
+            Y[k][1] -= f * t->amp;
+    }
+    fftw_plan p = fftw_plan_dft_c2r_1d(n, Y, vals, FFTW_ESTIMATE);
+    fftw_execute(p);
+    fftw_destroy_plan(p);
+    fftw_free(Y);
+    return 0;
+}
+
+static c2b_status project_fft(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, double t,
+                              const c2b_tolerances *tol, c2b_vseries *out, c2b_error *err)
+{
+    double L = dom->v1 - dom->v0;
+    int n = 64;
+    size_t cap = (size_t)tol->max_samples * 2;
+    double *x = fftw_alloc_real(cap), *vals = fftw_alloc_real(cap);
+    fftw_complex *X = fftw_alloc_complex(cap / 2 + 1);
+    c2b_status st = C2B_OK;
+    if (!x || !vals || !X) {
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        goto done;
+    }
+    for (int i = 0; i < n && !st; i++)
+        st = sample(f, ctx, dom->v0 + i * L / n, t, &x[i], err);
+    for (;;) {
+        if (st)
+            goto done;
+        double scale = 0;
+        for (int i = 0; i < n; i++)
+            scale = fmax(scale, fabs(x[i]));
+        fftw_plan p = fftw_plan_dft_r2c_1d(n, x, X, FFTW_ESTIMATE | FFTW_PRESERVE_INPUT);
+        fftw_execute(p);
+        fftw_destroy_plan(p);
+        out->n = 0;
+        if (fft_terms(X, n, L, tol->drop_rel * scale, out)) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+            goto done;
+        }
+        /* Truncated series on the doubled grid against f at the midpoints. */
+        if (periodic_values(out, L, 2 * n, vals)) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+            goto done;
+        }
+        double e = 0;
+        for (int j = 0; j < n; j++) {
+            double ym;
+            st = sample(f, ctx, dom->v0 + (j + 0.5) * L / n, t, &ym, err);
+            if (st)
+                goto done;
+            e = fmax(e, fabs(vals[2 * j + 1] - ym));
+            e = fmax(e, fabs(vals[2 * j] - x[j]));
+            vals[2 * j + 1] = ym; /* keep the midpoint samples for the next level */
+            scale = fmax(scale, fabs(ym));
+        }
+        out->scale = scale;
+        out->err_abs = e;
+        out->n_samples = n;
+        out->method = C2B_VM_FFT;
+        if (e <= tol->truncation_rel * scale || 2 * n > tol->max_samples)
+            break;
+        for (int j = 0; j < n; j++) {
+            double ym = vals[2 * j + 1];
+            vals[2 * j] = x[j];
+            vals[2 * j + 1] = ym;
+        }
+        memcpy(x, vals, sizeof(double) * 2 * (size_t)n);
+        n *= 2;
+    }
+done:
+    fftw_free(x);
+    fftw_free(vals);
+    fftw_free(X);
+    return st;
+}
+
+/* Cubic in s matching value and second derivative at both ends (s-monomials). */
+static void end_cubic(double f0, double f1, double g0, double g1, double L, double *c)
+{
+    double C = g0 * L * L / 2, D = (g1 - g0) * L * L / 6, A = f0, B = f1 - A - C - D;
+    c[0] = A;
+    c[1] = B / L;
+    c[2] = C / (L * L);
+    c[3] = D / (L * L * L);
+}
+
+/* Sine coefficients b_k (k = 1..n-1) of interior remainder r[1..n-1]. */
+static void dst_coefficients(double *r_interior, int n, double *b)
+{
+    fftw_plan p = fftw_plan_r2r_1d(n - 1, r_interior, b, FFTW_RODFT00, FFTW_ESTIMATE);
+    fftw_execute(p);
+    fftw_destroy_plan(p);
+    for (int k = 0; k < n - 1; k++)
+        b[k] /= n;
+}
+
+/* Append cubic + sine terms, dropping small sine amplitudes. */
+static int dst_terms(const double *cub, const double *b, int n, double L, double drop,
+                     c2b_vseries *out)
+{
+    out->n = 0;
+    for (int m = 0; m < 4; m++)
+        if (cub[m] != 0.0 && add_term(out, C2B_VF_POW, m, 0.0, cub[m]))
+            return -1;
+    for (int k = 1; k < n; k++)
+        if (fabs(b[k - 1]) > drop && add_term(out, C2B_VF_SIN, 0, C2B_PI * k / L, b[k - 1]))
+            return -1;
+    return 0;
+}
+
+/* Sine part of a series at s_j = j L / n, j = 1..n-1 (values into vals[j-1]). */
+static int sine_values(const c2b_vseries *s, double L, int n, double *vals)
+{
+    double *b = fftw_alloc_real((size_t)n);
+    if (!b)
+        return -1;
+    memset(b, 0, sizeof(double) * (size_t)n);
+    for (int i = 0; i < s->n; i++)
+        if (s->terms[i].f.kind == C2B_VF_SIN) {
+            int k = (int)lround(s->terms[i].f.omega * L / C2B_PI);
+            if (k >= 1 && k < n)
+                b[k - 1] += s->terms[i].amp;
+        }
+    fftw_plan p = fftw_plan_r2r_1d(n - 1, b, vals, FFTW_RODFT00, FFTW_ESTIMATE);
+    fftw_execute(p);
+    fftw_destroy_plan(p);
+    for (int j = 0; j < n - 1; j++)
+        vals[j] *= 0.5;
+    fftw_free(b);
+    return 0;
+}
+
+/* One-sided fourth-order second derivative at the start of a uniform sequence. */
+static double second_derivative_end(const double *y, int stride, double h)
+{
+    return (15.0 / 4 * y[0] - 77.0 / 6 * y[stride] + 107.0 / 6 * y[2 * stride] -
+            13.0 * y[3 * stride] + 61.0 / 12 * y[4 * stride] - 5.0 / 6 * y[5 * stride]) /
+           (h * h);
+}
+
+static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2, void *ctx,
+                              double t, const c2b_tolerances *tol, c2b_vseries *out,
+                              c2b_error *err)
+{
+    double L = dom->v1 - dom->v0;
+    int n = 64; /* intervals */
+    size_t cap = (size_t)tol->max_samples * 2 + 2;
+    double *y = malloc(cap * sizeof *y), *ny = malloc(cap * sizeof *ny);
+    double *r = fftw_alloc_real(cap), *b = fftw_alloc_real(cap), *vals = fftw_alloc_real(cap);
+    c2b_status st = C2B_OK;
+    double g0 = 0, g1 = 0, cub[4];
+    if (!y || !ny || !r || !b || !vals) {
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        goto done;
+    }
+    for (int i = 0; i <= n && !st; i++)
+        st = sample(f, ctx, dom->v0 + i * L / n, t, &y[i], err);
+    if (st)
+        goto done;
+    if (f2) {
+        st = sample(f2, ctx, dom->v0, t, &g0, err);
+        if (!st)
+            st = sample(f2, ctx, dom->v1, t, &g1, err);
+        if (st) {
+            c2b_error_prefix(err, "second v-derivative: ");
+            goto done;
+        }
+    }
+    for (;;) {
+        double h = L / n, scale = 0;
+        for (int i = 0; i <= n; i++)
+            scale = fmax(scale, fabs(y[i]));
+        if (!f2) {
+            g0 = second_derivative_end(y, 1, h);
+            g1 = second_derivative_end(y + n, -1, h);
+        }
+        end_cubic(y[0], y[n], g0, g1, L, cub);
+        for (int i = 1; i < n; i++)
+            r[i - 1] = y[i] - horner(cub, 3, i * h);
+        dst_coefficients(r, n, b);
+        if (dst_terms(cub, b, n, L, tol->drop_rel * scale, out) ||
+            sine_values(out, L, 2 * n, vals)) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+            goto done;
+        }
+        /* vals[j-1] = sine part at j L / (2n); compare at old points and midpoints. */
+        double e = 0;
+        ny[0] = y[0];
+        for (int j = 1; j < 2 * n; j++) {
+            double s = j * L / (2 * n), yj;
+            if (j % 2 == 0) {
+                yj = y[j / 2];
+            } else {
+                st = sample(f, ctx, dom->v0 + s, t, &yj, err);
+                if (st)
+                    goto done;
+            }
+            ny[j] = yj;
+            scale = fmax(scale, fabs(yj));
+            e = fmax(e, fabs(horner(cub, 3, s) + vals[j - 1] - yj));
+        }
+        ny[2 * n] = y[n];
+        out->scale = scale;
+        out->err_abs = e;
+        out->n_samples = n + 1;
+        out->method = C2B_VM_DST;
+        if (e <= tol->truncation_rel * scale || 2 * n > tol->max_samples)
+            break;
+        n *= 2;
+        double *tmp = y;
+        y = ny;
+        ny = tmp;
+    }
+done:
+    free(y);
+    free(ny);
+    fftw_free(r);
+    fftw_free(b);
+    fftw_free(vals);
+    return st;
+}
+
+c2b_status c2b_vseries_project(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2, void *ctx,
+                               double t, const c2b_tolerances *tol, c2b_vseries *out,
+                               c2b_error *err)
+{
+    c2b_tolerances def = c2b_tolerances_default();
+    if (!tol)
+        tol = &def;
+    if (!dom || !f || !out || !(dom->v1 > dom->v0))
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_vseries_project: invalid arguments");
+    out->n = 0;
+    out->n_samples = 0;
+    out->err_abs = 0;
+    double L = dom->v1 - dom->v0, xc[NCHECK], yc[NCHECK], scale = 0;
+    for (int i = 0; i < NCHECK; i++) {
+        xc[i] = CHECK_OFFSET + CHECK_STEP * i;
+        c2b_status st = sample(f, ctx, dom->v0 + xc[i] * L, t, &yc[i], err);
+        if (st)
+            return st;
+        scale = fmax(scale, fabs(yc[i]));
+    }
+    out->scale = scale;
+    out->n_samples = NCHECK;
+    if (scale == 0.0) {
+        /* Zero on the check points; confirm on a second, uniform set. */
+        int zero = 1;
+        for (int i = 0; i <= 16 && zero; i++) {
+            double y;
+            c2b_status st = sample(f, ctx, dom->v0 + i * L / 16, t, &y, err);
+            if (st)
+                return st;
+            zero = y == 0.0;
+        }
+        if (zero) {
+            out->method = C2B_VM_ZERO;
+            return C2B_OK;
+        }
+    }
+    int found = 0;
+    c2b_status st = try_polynomial(dom, f, ctx, t, tol, xc, yc, scale, out, &found, err);
+    if (st || found)
+        return st;
+    if (!dom->periodic) {
+        st = try_mode(dom, f, ctx, t, tol, xc, yc, scale, out, &found, err);
+        if (st || found)
+            return st;
+        return project_dst(dom, f, f2, ctx, t, tol, out, err);
+    }
+    return project_fft(dom, f, ctx, t, tol, out, err);
+}
+
+c2b_status c2b_vseries_project_samples(const c2b_vdomain *dom, const double *samples,
+                                       int stride, int n, const c2b_tolerances *tol,
+                                       c2b_vseries *out, c2b_error *err)
+{
+    c2b_tolerances def = c2b_tolerances_default();
+    if (!tol)
+        tol = &def;
+    if (!dom || !samples || !out || stride < 1 || !(dom->v1 > dom->v0))
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_vseries_project_samples: invalid arguments");
+    int nmin = dom->periodic ? 4 : 7;
+    if (n < nmin)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%d samples given, at least %d are needed", n,
+                             nmin);
+    double L = dom->v1 - dom->v0, scale = 0;
+    for (int i = 0; i < n; i++) {
+        double y = samples[(size_t)i * (size_t)stride];
+        if (!isfinite(y))
+            return c2b_error_set(err, C2B_ERR_SPEC, "sample %d is not finite (%g)", i, y);
+        scale = fmax(scale, fabs(y));
+    }
+    out->n = 0;
+    out->scale = scale;
+    out->n_samples = n;
+    out->err_abs = 0;
+    c2b_status st = C2B_OK;
+    if (dom->periodic) {
+        double *x = fftw_alloc_real((size_t)n), *vals = fftw_alloc_real((size_t)n);
+        fftw_complex *X = fftw_alloc_complex((size_t)n / 2 + 1);
+        if (!x || !vals || !X) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        } else {
+            for (int i = 0; i < n; i++)
+                x[i] = samples[(size_t)i * (size_t)stride];
+            fftw_plan p = fftw_plan_dft_r2c_1d(n, x, X, FFTW_ESTIMATE);
+            fftw_execute(p);
+            fftw_destroy_plan(p);
+            if (fft_terms(X, n, L, tol->drop_rel * scale, out) ||
+                periodic_values(out, L, n, vals)) {
+                st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+            } else {
+                for (int i = 0; i < n; i++)
+                    out->err_abs = fmax(out->err_abs,
+                                        fabs(vals[i] - samples[(size_t)i * (size_t)stride]));
+                out->method = C2B_VM_FFT;
+            }
+        }
+        fftw_free(x);
+        fftw_free(vals);
+        fftw_free(X);
+        return st;
+    }
+    int iv = n - 1; /* intervals */
+    double h = L / iv, cub[4];
+    double g0 = second_derivative_end(samples, stride, h);
+    double g1 = second_derivative_end(samples + (size_t)iv * (size_t)stride, -stride, h);
+    end_cubic(samples[0], samples[(size_t)iv * (size_t)stride], g0, g1, L, cub);
+    double *r = fftw_alloc_real((size_t)n), *b = fftw_alloc_real((size_t)n),
+           *vals = fftw_alloc_real((size_t)n);
+    if (!r || !b || !vals) {
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+    } else {
+        for (int i = 1; i < iv; i++)
+            r[i - 1] = samples[(size_t)i * (size_t)stride] - horner(cub, 3, i * h);
+        if (iv > 1)
+            dst_coefficients(r, iv, b);
+        if (dst_terms(cub, b, iv, L, tol->drop_rel * scale, out) ||
+            (iv > 1 && sine_values(out, L, iv, vals))) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        } else {
+            for (int i = 0; i <= iv; i++) {
+                double sv = (i > 0 && i < iv) ? vals[i - 1] : 0.0;
+                out->err_abs = fmax(out->err_abs, fabs(horner(cub, 3, i * h) + sv -
+                                                       samples[(size_t)i * (size_t)stride]));
+            }
+            out->method = C2B_VM_DST;
+        }
+    }
+    fftw_free(r);
+    fftw_free(b);
+    fftw_free(vals);
+    return st;
+}

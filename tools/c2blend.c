@@ -1,0 +1,301 @@
+/*
+ * c2blend: command-line front end of the C2Blend kernel.
+ *
+ *   c2blend eval SPEC [--u N --v M | --points FILE] [--t T] [--derivs]
+ *   c2blend info SPEC [--t T]
+ *
+ * Exit codes: 0 success, 2 bad usage or bad spec, 3 numerical failure (resonant or
+ * ill-conditioned mode), 4 out of memory. Errors go to stderr; stdout receives
+ * nothing unless the whole result was computed.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "c2b_blend.h"
+#include "c2b_spec.h"
+
+#define EXIT_USAGE 2
+#define EXIT_NUMERIC 3
+#define EXIT_NOMEM 4
+
+static const char USAGE[] =
+    "usage: c2blend eval SPEC [--u N --v M | --points FILE] [--t T] [--derivs]\n"
+    "       c2blend info SPEC [--t T]\n"
+    "SPEC is a JSON blend spec (see README.md), '-' for standard input.\n";
+
+static int exit_code(c2b_status st)
+{
+    switch (st) {
+    case C2B_OK: return 0;
+    case C2B_ERR_NUMERIC: return EXIT_NUMERIC;
+    case C2B_ERR_NOMEM: return EXIT_NOMEM;
+    default: return EXIT_USAGE;
+    }
+}
+
+static int fail(const c2b_error *err)
+{
+    fprintf(stderr, "c2blend: %s\n", err->msg);
+    return exit_code(err->code);
+}
+
+static int usage_error(const char *msg, const char *arg)
+{
+    fprintf(stderr, "c2blend: %s%s%s\n%s", msg, arg ? " " : "", arg ? arg : "", USAGE);
+    return EXIT_USAGE;
+}
+
+static int parse_double(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || end == s || *end || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+static int parse_count(const char *s, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < 2)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+typedef struct options {
+    const char *command, *spec, *points;
+    long nu, nv;
+    double t;
+    int have_t, derivs;
+} options;
+
+static int parse_args(int argc, char **argv, options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->nu = o->nv = 11;
+    if (argc < 3)
+        return usage_error("missing command or spec", NULL);
+    o->command = argv[1];
+    o->spec = argv[2];
+    int grid = 0;
+    for (int i = 3; i < argc; i++) {
+        const char *a = argv[i];
+        int has_val = i + 1 < argc;
+        if (!strcmp(a, "--derivs")) {
+            o->derivs = 1;
+        } else if (!strcmp(a, "--u") || !strcmp(a, "--v")) {
+            long *dst = a[2] == 'u' ? &o->nu : &o->nv;
+            if (!has_val || parse_count(argv[++i], dst))
+                return usage_error(a, "needs an integer >= 2");
+            grid = 1;
+        } else if (!strcmp(a, "--points")) {
+            if (!has_val)
+                return usage_error("--points needs a file name ('-' for stdin)", NULL);
+            o->points = argv[++i];
+        } else if (!strcmp(a, "--t")) {
+            if (!has_val || parse_double(argv[++i], &o->t))
+                return usage_error("--t needs a finite number", NULL);
+            o->have_t = 1;
+        } else {
+            return usage_error("unknown option", a);
+        }
+    }
+    if (grid && o->points)
+        return usage_error("give either --u/--v or --points, not both", NULL);
+    if (strcmp(o->command, "eval") && (grid || o->points || o->derivs))
+        return usage_error("--u, --v, --points and --derivs belong to 'eval'", NULL);
+    return 0;
+}
+
+/* Read "u v" pairs (space or comma separated, '#' comments) into growing arrays. */
+static c2b_status read_points(const char *path, double **pu, double **pv, size_t *np,
+                              c2b_error *err)
+{
+    FILE *f = strcmp(path, "-") ? fopen(path, "r") : stdin;
+    if (!f)
+        return c2b_error_set(err, C2B_ERR_IO, "--points %s: cannot open", path);
+    size_t cap = 1024, n = 0;
+    double *u = malloc(cap * sizeof *u), *v = malloc(cap * sizeof *v);
+    char line[4096];
+    long lineno = 0;
+    c2b_status st = C2B_OK;
+    while (!st && u && v && fgets(line, sizeof line, f)) {
+        lineno++;
+        for (char *p = line; *p; p++)
+            if (*p == ',' || *p == ';')
+                *p = ' ';
+        char *p = line;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        if (*p == '#' || *p == '\n' || *p == '\r' || !*p)
+            continue;
+        char *e1, *e2;
+        double a = strtod(p, &e1), b = strtod(e1, &e2);
+        while (*e2 == ' ' || *e2 == '\t' || *e2 == '\r' || *e2 == '\n')
+            e2++;
+        if (e1 == p || e2 == e1 || *e2 || !isfinite(a) || !isfinite(b)) {
+            st = c2b_error_set(err, C2B_ERR_SPEC, "--points %s line %ld: expected two finite numbers 'u v'",
+                               path, lineno);
+            break;
+        }
+        if (n == cap) {
+            cap *= 2;
+            double *nu2 = realloc(u, cap * sizeof *u);
+            if (nu2)
+                u = nu2;
+            double *nv2 = nu2 ? realloc(v, cap * sizeof *v) : NULL;
+            if (!nu2 || !nv2) {
+                st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory reading points");
+                break;
+            }
+            v = nv2;
+        }
+        u[n] = a;
+        v[n] = b;
+        n++;
+    }
+    if (!st && (!u || !v))
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory reading points");
+    if (!st && ferror(f))
+        st = c2b_error_set(err, C2B_ERR_IO, "--points %s: read error", path);
+    if (f != stdin)
+        fclose(f);
+    if (st) {
+        free(u);
+        free(v);
+        return st;
+    }
+    *pu = u;
+    *pv = v;
+    *np = n;
+    return C2B_OK;
+}
+
+static int cmd_eval(const options *o, const c2b_blend *b, const c2b_problem *pb)
+{
+    c2b_error err;
+    c2b_error_clear(&err);
+    int order = o->derivs ? (pb->continuity == C2B_C3 ? 3 : 2) : 0;
+    size_t nd = c2b_blend_deriv_count(order);
+    double *u = NULL, *v = NULL, *out = NULL;
+    size_t np = 0, nu = 0, nv = 0;
+    c2b_status st = C2B_OK;
+    if (o->points) {
+        st = read_points(o->points, &u, &v, &np, &err);
+    } else {
+        nu = (size_t)o->nu;
+        nv = (size_t)o->nv;
+        if ((double)nu * (double)nv > (double)pb->tol.max_eval_points) {
+            st = c2b_error_set(&err, C2B_ERR_LIMIT, "grid %zu x %zu exceeds the limit of %ld points",
+                               nu, nv, pb->tol.max_eval_points);
+        } else {
+            u = malloc(nu * sizeof *u);
+            v = malloc(nv * sizeof *v);
+            if (!u || !v)
+                st = c2b_error_set(&err, C2B_ERR_NOMEM, "out of memory");
+            for (size_t i = 0; !st && i < nu; i++)
+                u[i] = (double)i / (double)(nu - 1);
+            for (size_t j = 0; !st && j < nv; j++)
+                v[j] = pb->dom.v0 + (pb->dom.v1 - pb->dom.v0) * (double)j / (double)(nv - 1);
+            np = nu * nv;
+        }
+    }
+    if (!st) {
+        out = malloc((np ? np : 1) * nd * 3 * sizeof *out);
+        if (!out)
+            st = c2b_error_set(&err, C2B_ERR_NOMEM, "out of memory for %zu points", np);
+    }
+    if (!st)
+        st = o->points ? c2b_blend_eval(b, np, u, v, order, out, &err)
+                       : c2b_blend_eval_grid(b, nu, u, nv, v, order, out, &err);
+    /* Never print numbers that are not finite. */
+    for (size_t i = 0; !st && i < np * nd * 3; i++)
+        if (!isfinite(out[i]))
+            st = c2b_error_set(&err, C2B_ERR_NUMERIC, "evaluation produced a non-finite value at point %zu",
+                               i / (nd * 3));
+    if (st) {
+        free(u);
+        free(v);
+        free(out);
+        return fail(&err);
+    }
+    static const char *const dn[] = {"", "u", "v", "uu", "uv", "vv", "uuu", "uuv", "uvv", "vvv"};
+    fputs("u,v,x,y,z", stdout);
+    for (size_t d = 1; d < nd; d++)
+        printf(",x%s,y%s,z%s", dn[d], dn[d], dn[d]);
+    putchar('\n');
+    for (size_t p = 0; p < np; p++) {
+        double pu = o->points ? u[p] : u[p / nv], pv = o->points ? v[p] : v[p % nv];
+        printf("%.17g,%.17g", pu, pv);
+        for (size_t k = 0; k < nd * 3; k++)
+            printf(",%.17g", out[p * nd * 3 + k]);
+        putchar('\n');
+    }
+    free(u);
+    free(v);
+    free(out);
+    if (fflush(stdout) || ferror(stdout)) {
+        fprintf(stderr, "c2blend: error writing standard output\n");
+        return EXIT_USAGE;
+    }
+    return 0;
+}
+
+static int cmd_info(const c2b_blend *b, const c2b_spec *spec)
+{
+    c2b_error err;
+    size_t need = 0;
+    c2b_blend_info_json(b, NULL, 0, &need, NULL);
+    char *buf = malloc(need + 1);
+    if (!buf)
+        return EXIT_NOMEM;
+    if (c2b_blend_info_json(b, buf, need + 1, &need, &err)) {
+        free(buf);
+        return fail(&err);
+    }
+    /* Prepend the spec name. */
+    printf("{\n\t\"name\":\t\"%s\",%s\n", c2b_spec_name(spec), buf + 1);
+    free(buf);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        fputs(USAGE, stdout);
+        return 0;
+    }
+    int rc = parse_args(argc, argv, &o);
+    if (rc)
+        return rc;
+    if (strcmp(o.command, "eval") && strcmp(o.command, "info"))
+        return usage_error("unknown command", o.command);
+    c2b_error err;
+    c2b_error_clear(&err);
+    c2b_spec *spec = NULL;
+    c2b_status st = c2b_spec_load(o.spec, &spec, &err);
+    if (st)
+        return fail(&err);
+    c2b_problem pb = *c2b_spec_problem(spec);
+    if (o.have_t)
+        pb.time = o.t;
+    c2b_blend *b = NULL;
+    st = c2b_blend_create(&pb, &b, &err);
+    if (st) {
+        c2b_spec_destroy(spec);
+        return fail(&err);
+    }
+    rc = !strcmp(o.command, "eval") ? cmd_eval(&o, b, &pb) : cmd_info(b, spec);
+    c2b_blend_destroy(b);
+    c2b_spec_destroy(spec);
+    return rc;
+}
