@@ -581,6 +581,82 @@ c2b_status c2b_vseries_project(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2
     return project_fft(dom, f, ctx, t, tol, out, err);
 }
 
+/* Series of uniform samples, without error measurement. Periodic: n samples, end not
+ * repeated. Open: n samples including both ends. */
+static c2b_status samples_series(const c2b_vdomain *dom, const double *samples, int stride,
+                                 int n, double drop, c2b_vseries *out, c2b_error *err)
+{
+    double L = dom->v1 - dom->v0;
+    c2b_status st = C2B_OK;
+    out->n = 0;
+    if (dom->periodic) {
+        double *x = fftw_alloc_real((size_t)n);
+        fftw_complex *X = fftw_alloc_complex((size_t)n / 2 + 1);
+        if (!x || !X) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        } else {
+            for (int i = 0; i < n; i++)
+                x[i] = samples[(size_t)i * (size_t)stride];
+            fftw_plan p = fftw_plan_dft_r2c_1d(n, x, X, FFTW_ESTIMATE);
+            fftw_execute(p);
+            fftw_destroy_plan(p);
+            if (fft_terms(X, n, L, drop, out))
+                st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+            out->method = C2B_VM_FFT;
+        }
+        fftw_free(x);
+        fftw_free(X);
+        return st;
+    }
+    int iv = n - 1;
+    double h = L / iv, cub[4];
+    double g0 = second_derivative_end(samples, stride, h);
+    double g1 = second_derivative_end(samples + (size_t)iv * (size_t)stride, -stride, h);
+    end_cubic(samples[0], samples[(size_t)iv * (size_t)stride], g0, g1, L, cub);
+    double *r = fftw_alloc_real((size_t)n), *b = fftw_alloc_real((size_t)n);
+    if (!r || !b) {
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+    } else {
+        for (int i = 1; i < iv; i++)
+            r[i - 1] = samples[(size_t)i * (size_t)stride] - horner(cub, 3, i * h);
+        if (iv > 1)
+            dst_coefficients(r, iv, b);
+        if (dst_terms(cub, b, iv, L, drop, out))
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        out->method = C2B_VM_DST;
+    }
+    fftw_free(r);
+    fftw_free(b);
+    return st;
+}
+
+/* Values of a samples_series() result on the m-point sample grid of the domain. */
+static int series_on_grid(const c2b_vseries *s, const c2b_vdomain *dom, int m, double *vals)
+{
+    double L = dom->v1 - dom->v0;
+    if (dom->periodic)
+        return periodic_values(s, L, m, vals);
+    int iv = m - 1;
+    double *sv = fftw_alloc_real((size_t)m);
+    if (!sv)
+        return -1;
+    if (iv > 1 && sine_values(s, L, iv, sv)) {
+        fftw_free(sv);
+        return -1;
+    }
+    for (int i = 0; i <= iv; i++) {
+        double poly = 0, tmp;
+        for (int k = 0; k < s->n; k++)
+            if (s->terms[k].f.kind == C2B_VF_POW) {
+                c2b_vfunc_eval(&s->terms[k].f, i * L / iv, L, 0, &tmp);
+                poly += s->terms[k].amp * tmp;
+            }
+        vals[i] = poly + ((i > 0 && i < iv) ? sv[i - 1] : 0.0);
+    }
+    fftw_free(sv);
+    return 0;
+}
+
 c2b_status c2b_vseries_project_samples(const c2b_vdomain *dom, const double *samples,
                                        int stride, int n, const c2b_tolerances *tol,
                                        c2b_vseries *out, c2b_error *err)
@@ -594,72 +670,43 @@ c2b_status c2b_vseries_project_samples(const c2b_vdomain *dom, const double *sam
     if (n < nmin)
         return c2b_error_set(err, C2B_ERR_SPEC, "%d samples given, at least %d are needed", n,
                              nmin);
-    double L = dom->v1 - dom->v0, scale = 0;
+    if (n > 4 * tol->max_samples)
+        return c2b_error_set(err, C2B_ERR_LIMIT, "%d samples given, the limit is %d", n,
+                             4 * tol->max_samples);
+    double scale = 0;
     for (int i = 0; i < n; i++) {
         double y = samples[(size_t)i * (size_t)stride];
         if (!isfinite(y))
             return c2b_error_set(err, C2B_ERR_SPEC, "sample %d is not finite (%g)", i, y);
         scale = fmax(scale, fabs(y));
     }
-    out->n = 0;
+    double drop = tol->drop_rel * scale;
+    c2b_status st = samples_series(dom, samples, stride, n, drop, out, err);
+    if (st)
+        return st;
     out->scale = scale;
     out->n_samples = n;
     out->err_abs = 0;
-    c2b_status st = C2B_OK;
-    if (dom->periodic) {
-        double *x = fftw_alloc_real((size_t)n), *vals = fftw_alloc_real((size_t)n);
-        fftw_complex *X = fftw_alloc_complex((size_t)n / 2 + 1);
-        if (!x || !vals || !X) {
-            st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-        } else {
-            for (int i = 0; i < n; i++)
-                x[i] = samples[(size_t)i * (size_t)stride];
-            fftw_plan p = fftw_plan_dft_r2c_1d(n, x, X, FFTW_ESTIMATE);
-            fftw_execute(p);
-            fftw_destroy_plan(p);
-            if (fft_terms(X, n, L, tol->drop_rel * scale, out) ||
-                periodic_values(out, L, n, vals)) {
-                st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-            } else {
-                for (int i = 0; i < n; i++)
-                    out->err_abs = fmax(out->err_abs,
-                                        fabs(vals[i] - samples[(size_t)i * (size_t)stride]));
-                out->method = C2B_VM_FFT;
-            }
-        }
-        fftw_free(x);
-        fftw_free(vals);
-        fftw_free(X);
-        return st;
+    /* Error at the samples (from dropped modes), and a leave-half-out estimate of the
+     * error between samples: the series of every other sample, checked at the rest. */
+    double *vals = malloc((size_t)n * sizeof *vals);
+    c2b_vseries half;
+    memset(&half, 0, sizeof half);
+    if (!vals || series_on_grid(out, dom, n, vals)) {
+        free(vals);
+        return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
     }
-    int iv = n - 1; /* intervals */
-    double h = L / iv, cub[4];
-    double g0 = second_derivative_end(samples, stride, h);
-    double g1 = second_derivative_end(samples + (size_t)iv * (size_t)stride, -stride, h);
-    end_cubic(samples[0], samples[(size_t)iv * (size_t)stride], g0, g1, L, cub);
-    double *r = fftw_alloc_real((size_t)n), *b = fftw_alloc_real((size_t)n),
-           *vals = fftw_alloc_real((size_t)n);
-    if (!r || !b || !vals) {
-        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-    } else {
-        for (int i = 1; i < iv; i++)
-            r[i - 1] = samples[(size_t)i * (size_t)stride] - horner(cub, 3, i * h);
-        if (iv > 1)
-            dst_coefficients(r, iv, b);
-        if (dst_terms(cub, b, iv, L, tol->drop_rel * scale, out) ||
-            (iv > 1 && sine_values(out, L, iv, vals))) {
+    for (int i = 0; i < n; i++)
+        out->err_abs = fmax(out->err_abs, fabs(vals[i] - samples[(size_t)i * (size_t)stride]));
+    int nh = dom->periodic ? (n % 2 == 0 ? n / 2 : 0) : ((n - 1) % 2 == 0 ? (n - 1) / 2 + 1 : 0);
+    if (nh >= nmin) {
+        st = samples_series(dom, samples, 2 * stride, nh, drop, &half, err);
+        if (!st && series_on_grid(&half, dom, n, vals))
             st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-        } else {
-            for (int i = 0; i <= iv; i++) {
-                double sv = (i > 0 && i < iv) ? vals[i - 1] : 0.0;
-                out->err_abs = fmax(out->err_abs, fabs(horner(cub, 3, i * h) + sv -
-                                                       samples[(size_t)i * (size_t)stride]));
-            }
-            out->method = C2B_VM_DST;
-        }
+        for (int i = 1; !st && i < n; i += 2)
+            out->err_abs = fmax(out->err_abs, fabs(vals[i] - samples[(size_t)i * (size_t)stride]));
     }
-    fftw_free(r);
-    fftw_free(b);
-    fftw_free(vals);
+    c2b_vseries_clear(&half);
+    free(vals);
     return st;
 }

@@ -105,9 +105,13 @@ c2b_status c2b_vseries_project(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2
 
 /**
  * Expand uniform samples: periodic data are n samples at v0 + i L / n (end not
- * repeated); open data are n >= 7 samples at v0 + i L / (n-1). err_abs is measured
- * against the samples after small modes are dropped.
- * @return C2B_OK; C2B_ERR_SPEC for too few or non-finite samples; C2B_ERR_NOMEM.
+ * repeated); open data are n >= 7 samples at v0 + i L / (n-1). err_abs is the larger
+ * of the error at the samples (after small modes are dropped) and a leave-half-out
+ * estimate: the series built from every other sample, checked at the samples left
+ * out. The latter bounds the error between samples (conservatively, since it is
+ * measured at half the resolution).
+ * @return C2B_OK; C2B_ERR_SPEC for too few or non-finite samples; C2B_ERR_LIMIT for
+ *         more than 4 * tol->max_samples samples; C2B_ERR_NOMEM.
  */
 c2b_status c2b_vseries_project_samples(const c2b_vdomain *dom, const double *samples,
                                        int stride, int n, const c2b_tolerances *tol,

@@ -434,6 +434,7 @@ static void cases_order6(void)
     case_beta3("n3 beta=-(8pi)^2", 8.0 * PI);
     case_beta3("n3 beta=-40^2", 40.0);
     case_beta3("n3 beta=-60^2", 60.0);
+    case_beta3("n3 beta=-200^2", 200.0);
 
     /* c = {1,1,1,0}: chi = r^2 (r^4 + r^2 + 1); r = 0 (double) and
      * r^2 = e^{+-2i pi/3} -> r = +-e^{+-i pi/3} = +-1/2 +- i sqrt3/2
@@ -538,11 +539,11 @@ static void cases_order8(void)
 
     /* G^(8) - k^8 G = 0: roots r = k e^{i pi j/4}, j = 0..7. */
     {
-        static const double ks[3] = {3.0, 20.0, 60.0};
-        static const char *nm[3] = {"n4 G8=k^8 G k=3", "n4 G8=k^8 G k=20",
-                                    "n4 G8=k^8 G k=60"};
+        static const double ks[4] = {3.0, 20.0, 60.0, 200.0};
+        static const char *nm[4] = {"n4 G8=k^8 G k=3", "n4 G8=k^8 G k=20",
+                                    "n4 G8=k^8 G k=60", "n4 G8=k^8 G k=200"};
         int t;
-        for (t = 0; t < 3; ++t) {
+        for (t = 0; t < 4; ++t) {
             double k = ks[t];
             c[0] = 1;
             c[1] = c[2] = c[3] = 0;
@@ -607,6 +608,19 @@ static void case_invalid(void)
     g_checks += 4;
     if (r1 == 0 || r2 == 0 || r3 == 0 || r4 == 0) {
         printf("  FAIL: invalid input accepted\n");
+        ++g_fail;
+    }
+    /* Valid call with cond_out == NULL (and with n_eval == 0) must succeed.
+     * c = {1,0,0}: G(4) = 0 with G(0)=1 and the other data 0 gives
+     * G = 1 - 3u^2 + 2u^3, so G(0.5) = 0.5. */
+    d[0] = 1.0;
+    r1 = oracle_cheb_bvp(2, c, -1, NULL, d, 16, 0, NULL, NULL, NULL);
+    r2 = oracle_cheb_bvp(2, c, -1, NULL, d, 16, 1, &u, out, NULL);
+    printf("  valid, cond_out=NULL: rc=%d, %d (G(0.5)=%.16g, exact 0.5)\n", r1,
+           r2, out[0]);
+    g_checks += 2;
+    if (r1 != 0 || r2 != 0 || fabs(out[0] - 0.5) > 1e-14) {
+        printf("  FAIL: valid call\n");
         ++g_fail;
     }
 }
