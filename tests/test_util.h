@@ -11,7 +11,7 @@
 static int t_failed = 0, t_passed = 0;
 
 /* |got - want| <= atol + rtol * |want| */
-static int check_close(const char *what, double got, double want, double rtol, double atol)
+static inline int check_close(const char *what, double got, double want, double rtol, double atol)
 {
     double e = fabs(got - want);
     int ok = isfinite(got) && e <= atol + rtol * fabs(want);
@@ -21,7 +21,7 @@ static int check_close(const char *what, double got, double want, double rtol, d
     return ok;
 }
 
-static int check_true(const char *what, int cond)
+static inline int check_true(const char *what, int cond)
 {
     printf("%s %s\n", cond ? "ok  " : "FAIL", what);
     cond ? t_passed++ : t_failed++;
@@ -29,7 +29,7 @@ static int check_true(const char *what, int cond)
 }
 
 /* value <= limit */
-static int check_le(const char *what, double value, double limit)
+static inline int check_le(const char *what, double value, double limit)
 {
     int ok = value <= limit;
     printf("%s %s: %.6g <= %.6g\n", ok ? "ok  " : "FAIL", what, value, limit);
@@ -37,7 +37,7 @@ static int check_le(const char *what, double value, double limit)
     return ok;
 }
 
-static int test_summary(const char *name)
+static inline int test_summary(const char *name)
 {
     printf("%s: %d passed, %d failed\n", name, t_passed, t_failed);
     return t_failed != 0 || t_passed == 0;
