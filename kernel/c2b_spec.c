@@ -15,7 +15,8 @@
  * v,t-expression (explicit boundary data). */
 typedef struct datum {
     c2b_expr *e;     /* function of (u,) v, t */
-    c2b_expr *evv;   /* its second v-derivative */
+    c2b_expr *evv;   /* its second v-derivative, derived on first use */
+    int evv_failed;
     double u;        /* trim parameter (ignored for boundary expressions) */
     double sign;
     double *samples; /* owned, 3 per row */
@@ -43,10 +44,15 @@ static double datum_fn(void *ctx, double v, double t)
     return d->sign * c2b_expr_eval(d->e, d->u, v, t);
 }
 
+/* The exact second v-derivative is only needed for open trimlines whose data are
+ * neither polynomials nor modes (cubic + DST), and symbolic derivatives of large
+ * expressions are expensive in libmatheval, so it is derived on first use. */
 static double datum_vv(void *ctx, double v, double t)
 {
-    const datum *d = ctx;
-    return d->sign * c2b_expr_eval(d->evv, d->u, v, t);
+    datum *d = ctx;
+    if (!d->evv && !d->evv_failed && c2b_expr_derivative(d->e, 'v', 2, &d->evv, NULL))
+        d->evv_failed = 1;
+    return d->evv ? d->sign * c2b_expr_eval(d->evv, d->u, v, t) : NAN;
 }
 
 static double force_fn(void *ctx, double u, double v, double t)
@@ -229,23 +235,19 @@ static c2b_status parse_shape(c2b_spec *s, const cJSON *j, c2b_error *err)
 }
 
 /* Bind datum (c, side, p) to an expression context. */
-static c2b_status bind_expr_datum(c2b_spec *s, int c, int side, int p, c2b_expr *e, double u,
-                                  double sign, c2b_error *err)
+static void bind_expr_datum(c2b_spec *s, int c, int side, int p, c2b_expr *e, double u,
+                            double sign)
 {
     datum *d = &s->data[c][side][p];
     d->e = e;
     d->u = u;
     d->sign = sign;
-    c2b_status st = c2b_expr_derivative(e, 'v', 2, &d->evv, err);
-    if (st)
-        return c2b_error_prefix(err, "%s: ", d->label);
     c2b_bfunc *bf = &s->pb.data[c][side][p];
     bf->fn = datum_fn;
     bf->fn_vv = datum_vv;
     bf->ctx = d;
     bf->time_dependent = c2b_expr_depends(e, 't');
     bf->label = d->label;
-    return C2B_OK;
 }
 
 static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error *err)
@@ -300,11 +302,7 @@ static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error
                 return c2b_error_prefix(err, "%s: ", f);
             }
             snprintf(s->data[c][side][p].label, LABEL_LEN, "%s (d^%d/du^%d at u=%g)", f, p, p, tu);
-            st = bind_expr_datum(s, c, side, p, dp, tu, sign, err);
-            if (st) {
-                c2b_expr_destroy(e);
-                return st;
-            }
+            bind_expr_datum(s, c, side, p, dp, tu, sign);
             sign *= dir;
         }
         c2b_expr_destroy(e);
@@ -329,9 +327,7 @@ static c2b_status parse_boundary_row(c2b_spec *s, const cJSON *row, int side, in
             if (st)
                 return st;
             snprintf(s->data[c][side][p].label, LABEL_LEN, "%s", f);
-            st = bind_expr_datum(s, c, side, p, e, 0.0, 1.0, err);
-            if (st)
-                return st;
+            bind_expr_datum(s, c, side, p, e, 0.0, 1.0);
         }
         return C2B_OK;
     }
