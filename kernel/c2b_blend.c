@@ -706,6 +706,46 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
     return C2B_OK;
 }
 
+int c2b_blend_constraints(const c2b_blend *b) { return b->n; }
+
+c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, double *scale,
+                                       c2b_error *err)
+{
+    if (!b || !res || !scale || ns < 2)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_blend_boundary_residual: invalid arguments");
+    int n = b->n, order = n - 1;
+    static const int uentry[C2B_MAX_N] = {0, 1, 3, 6}; /* S, Su, Suu, Suuu */
+    const c2b_vdomain *dom = &b->pb.dom;
+    double L = dom->v1 - dom->v0;
+    for (int k = 0; k < 2 * n; k++)
+        res[k] = scale[k] = 0.0;
+    for (int side = 0; side < 2; side++)
+        for (int c = 0; c < C2B_NCOMP; c++)
+            for (int p = 0; p < n; p++) {
+                const c2b_bfunc *bf = &b->pb.data[c][side][p];
+                int m = bf->fn ? ns : bf->samples ? bf->n_samples : ns;
+                for (int i = 0; i < m; i++) {
+                    double v, want;
+                    if (bf->samples && !bf->fn) {
+                        int iv = dom->periodic ? m : m - 1;
+                        v = dom->v0 + L * i / iv;
+                        want = bf->samples[(size_t)i * (size_t)(bf->stride ? bf->stride : 1)];
+                    } else {
+                        v = dom->v0 + L * i / (ns - 1);
+                        want = bf->fn ? bf->fn(bf->ctx, v, b->t) : 0.0;
+                    }
+                    double u = side, out[3 * 10];
+                    c2b_status st = c2b_blend_eval(b, 1, &u, &v, order, out, err);
+                    if (st)
+                        return st;
+                    double got = out[uentry[p] * 3 + c];
+                    res[side * n + p] = fmax(res[side * n + p], fabs(got - want));
+                    scale[side * n + p] = fmax(scale[side * n + p], fabs(want));
+                }
+            }
+    return C2B_OK;
+}
+
 /* ---- introspection ----------------------------------------------------------------- */
 
 double c2b_blend_truncation_error(const c2b_blend *b)
@@ -809,6 +849,21 @@ c2b_status c2b_blend_info_json(const c2b_blend *b, char *buf, size_t cap, size_t
             cJSON_AddItemToArray(modes, jm);
         }
         cJSON_AddItemToArray(comps, jc);
+    }
+    {
+        static const char *const rname[C2B_MAX_N] = {"S", "S_u", "S_uu", "S_uuu"};
+        double res[2 * C2B_MAX_N], sc[2 * C2B_MAX_N];
+        if (c2b_blend_boundary_residual(b, 101, res, sc, NULL) == C2B_OK) {
+            cJSON *br = cJSON_AddArrayToObject(root, "boundary_residuals");
+            for (int k = 0; k < 2 * b->n; k++) {
+                cJSON *jr = cJSON_CreateObject();
+                cJSON_AddStringToObject(jr, "side", side_name[k / b->n]);
+                cJSON_AddStringToObject(jr, "datum", rname[k % b->n]);
+                cJSON_AddNumberToObject(jr, "max_abs", res[k]);
+                cJSON_AddNumberToObject(jr, "data_scale", sc[k]);
+                cJSON_AddItemToArray(br, jr);
+            }
+        }
     }
     cJSON_AddNumberToObject(root, "cached_transfer_sets", b->nmodes);
     cJSON_AddNumberToObject(root, "truncation_error", c2b_blend_truncation_error(b));

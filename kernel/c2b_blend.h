@@ -78,6 +78,21 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
 /** Largest measured truncation error of the boundary data expansion, in model units. */
 double c2b_blend_truncation_error(const c2b_blend *b);
 
+/**
+ * Measure how well the blend reproduces its boundary data: at ns uniformly spaced v
+ * (ns >= 2), compare d^p S/du^p at u = side with the boundary function of the problem
+ * itself (callback or sample interpolation is not used: sampled data are compared at
+ * their own sample points). res[side * n + p] receives the maximum absolute difference
+ * over v and components, scale[side * n + p] the maximum magnitude of the datum
+ * (both caller buffers of 2n, n = constraints per trimline).
+ * @return C2B_OK; C2B_ERR_ARG; C2B_ERR_NOMEM.
+ */
+c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, double *scale,
+                                       c2b_error *err);
+
+/** Constraints per trimline n (2 for C1, 3 for C2 and ODE, 4 for C3). */
+int c2b_blend_constraints(const c2b_blend *b);
+
 /** Largest condition estimate over the modes in use (1 if there are none). */
 double c2b_blend_max_condition(const c2b_blend *b);
 

@@ -8,7 +8,7 @@ c2b_tolerances c2b_tolerances_default(void)
     t.imag_rel = 1e-8;
     t.truncation_rel = 1e-13;
     t.structure_rel = 1e-12;
-    t.drop_rel = 1e-15;
+    t.drop_rel = 1e-14;
     t.max_poly_degree = 8;
     t.max_samples = 16384;
     t.max_eval_points = 50000000L;

@@ -24,7 +24,8 @@ typedef struct c2b_tolerances {
     double truncation_rel;
     /** Relative tolerance of the exact-structure tests (polynomial in v, f''=beta f). */
     double structure_rel;
-    /** Modes whose amplitude is below this fraction of the data scale are dropped. */
+    /** Modes whose amplitude is below this fraction of the data scale are dropped
+     *  (FFT rounding noise is a few 1e-15); the error they leave is measured. */
     double drop_rel;
     /** Highest polynomial degree in v recognised exactly. */
     int max_poly_degree;
@@ -35,7 +36,7 @@ typedef struct c2b_tolerances {
 } c2b_tolerances;
 
 /** The defaults: cluster 1.0, cond_limit 1e10, imag_rel 1e-8, truncation_rel 1e-13,
- *  structure_rel 1e-12, drop_rel 1e-15, max_poly_degree 8, max_samples 16384,
+ *  structure_rel 1e-12, drop_rel 1e-14, max_poly_degree 8, max_samples 16384,
  *  max_eval_points 5e7. */
 c2b_tolerances c2b_tolerances_default(void);
 

@@ -319,8 +319,23 @@ static int periodic_values(const c2b_vseries *s, double L, int n, double *vals)
     return 0;
 }
 
+/* Largest |series - f| at the off-grid check points: a dyadic sampling grid cannot
+ * tell a mode from its alias, these points can. */
+static double offgrid_error(const c2b_vseries *s, const c2b_vdomain *dom, const double *xc,
+                            const double *yc)
+{
+    double L = dom->v1 - dom->v0, e = 0;
+    for (int i = 0; i < NCHECK; i++) {
+        double y;
+        c2b_vseries_eval(s, dom, dom->v0 + xc[i] * L, 0, &y);
+        e = fmax(e, fabs(y - yc[i]));
+    }
+    return e;
+}
+
 static c2b_status project_fft(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, double t,
-                              const c2b_tolerances *tol, c2b_vseries *out, c2b_error *err)
+                              const c2b_tolerances *tol, const double *xc, const double *yc,
+                              c2b_vseries *out, c2b_error *err)
 {
     double L = dom->v1 - dom->v0;
     int n = 64;
@@ -364,6 +379,7 @@ static c2b_status project_fft(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, do
             vals[2 * j + 1] = ym; /* keep the midpoint samples for the next level */
             scale = fmax(scale, fabs(ym));
         }
+        e = fmax(e, offgrid_error(out, dom, xc, yc));
         out->scale = scale;
         out->err_abs = e;
         out->n_samples = n;
@@ -450,8 +466,8 @@ static double second_derivative_end(const double *y, int stride, double h)
 }
 
 static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2, void *ctx,
-                              double t, const c2b_tolerances *tol, c2b_vseries *out,
-                              c2b_error *err)
+                              double t, const c2b_tolerances *tol, const double *xc,
+                              const double *yc, c2b_vseries *out, c2b_error *err)
 {
     double L = dom->v1 - dom->v0;
     int n = 64; /* intervals */
@@ -511,6 +527,7 @@ static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2,
             e = fmax(e, fabs(horner(cub, 3, s) + vals[j - 1] - yj));
         }
         ny[2 * n] = y[n];
+        e = fmax(e, offgrid_error(out, dom, xc, yc));
         out->scale = scale;
         out->err_abs = e;
         out->n_samples = n + 1;
@@ -576,9 +593,9 @@ c2b_status c2b_vseries_project(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2
         st = try_mode(dom, f, ctx, t, tol, xc, yc, scale, out, &found, err);
         if (st || found)
             return st;
-        return project_dst(dom, f, f2, ctx, t, tol, out, err);
+        return project_dst(dom, f, f2, ctx, t, tol, xc, yc, out, err);
     }
-    return project_fft(dom, f, ctx, t, tol, out, err);
+    return project_fft(dom, f, ctx, t, tol, xc, yc, out, err);
 }
 
 /* Series of uniform samples, without error measurement. Periodic: n samples, end not

@@ -93,7 +93,8 @@ typedef double (*c2b_vt_fn)(void *ctx, double v, double t);
  * f'' = beta f (exact pair of modes); otherwise periodic data by real FFT and open
  * data by a cubic (matching f and f'' at both ends; f2 is the exact second
  * v-derivative, or NULL for one-sided finite differences) plus a DST-I sine
- * series, doubling the samples until the error at the midpoints is below
+ * series, doubling the samples until the error at the midpoints and at 33 points off
+ * the dyadic grid (which an aliased mode cannot match) is below
  * tol->truncation_rel * scale or tol->max_samples is reached. The error actually
  * reached is in out->err_abs.
  * @return C2B_OK; C2B_ERR_SPEC when f is not finite somewhere (message gives v);
