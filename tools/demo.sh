@@ -7,7 +7,8 @@ C2B="$BUILD/tools/c2blend"
 SPEC=examples/thesis_eq130_131.json
 mkdir -p out
 "$C2B" info "$SPEC" > out/demo_info.json.tmp && mv out/demo_info.json.tmp out/demo_info.json
-python3 - out/demo_info.json <<'PY'
+PY=${PYTHON:-/usr/bin/python3}
+"$PY" - out/demo_info.json <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 print("C2Blend demo: %s" % d["name"])
@@ -27,6 +28,6 @@ print("  time: projection %.3f ms, modes %.3f ms, solve %.3f ms" % (t["projectio
 PY
 "$C2B" eval "$SPEC" --u 41 --v 65 > out/demo.csv.tmp && mv out/demo.csv.tmp out/demo.csv
 echo "  wrote out/demo.csv (41 x 65 grid, u then v) and out/demo_info.json"
-if python3 tools/plot_blend.py "$SPEC" -o out/demo.png --c2blend "$C2B" > /dev/null; then
+if "$PY" tools/plot_blend.py "$SPEC" -o out/demo.png --c2blend "$C2B" > /dev/null; then
   echo "  wrote out/demo.png"
 fi

@@ -21,7 +21,7 @@ printf '0.5 0.25\n' | "$c2b" eval "$spec" --points - > "$t/s.csv" || fail=1
 [ "$(sed -n 2p "$t/s.csv")" = "$(sed -n 2p "$t/p.csv")" ] || { echo "FAIL stdin points differ"; fail=1; }
 # u=1, v=0 of the thesis eq. 2-4 example: (0, d, -0.027 h3) = (0, 0.6, -0.135)
 row=$(sed -n 4p "$t/p.csv")
-python3 - "$row" <<'PY' || fail=1
+${PYTHON:-/usr/bin/python3} - "$row" <<'PY' || fail=1
 import sys
 u, v, x, y, z = map(float, sys.argv[1].split(","))
 ok = abs(x) < 1e-13 and abs(y - 0.6) < 1e-13 and abs(z + 0.135) < 1e-13
