@@ -88,37 +88,16 @@ static double now(void)
 
 /* ---- force decomposition: F(u, v, t) = sum_i u^i f_i(v, t) ---------------------- */
 
-static double cheb_node(int j, int np)
-{
-    return np == 1 ? 0.5 : 0.5 - 0.5 * cos(C2B_PI * (2 * j + 1) / (2.0 * np));
-}
-
-static void interp_monomial(int np, const double *x, const double *y, double *coef)
-{
-    double dd[FORCE_MAX_DEG + 2];
-    memcpy(dd, y, (size_t)np * sizeof *dd);
-    for (int k = 1; k < np; k++)
-        for (int i = np - 1; i >= k; i--)
-            dd[i] = (dd[i] - dd[i - 1]) / (x[i] - x[i - k]);
-    for (int i = 0; i < np; i++)
-        coef[i] = 0.0;
-    for (int k = np - 1; k >= 0; k--) {
-        for (int i = np - 1; i >= 1; i--)
-            coef[i] = coef[i - 1] - x[k] * coef[i];
-        coef[0] = -x[k] * coef[0] + dd[k];
-    }
-}
-
 static double force_coef_fn(void *ctx, double v, double t)
 {
     const force_coef *fc = ctx;
     int np = fc->deg + 1;
     double x[FORCE_MAX_DEG + 1], y[FORCE_MAX_DEG + 1], c[FORCE_MAX_DEG + 1];
     for (int j = 0; j < np; j++) {
-        x[j] = cheb_node(j, np);
+        x[j] = c2b_poly_cheb_node(j, np);
         y[j] = fc->F->fn(fc->F->ctx, x[j], v, t);
     }
-    interp_monomial(np, x, y, c);
+    c2b_poly_interpolate(np, x, y, c);
     return c[fc->index];
 }
 
@@ -134,7 +113,7 @@ static c2b_status force_degree(const c2b_problem *pb, int c, int *deg, c2b_error
             double v = pb->dom.v0 + vs[k] * L, x[FORCE_MAX_DEG + 1], y[FORCE_MAX_DEG + 1],
                    co[FORCE_MAX_DEG + 1], scale = 0;
             for (int j = 0; j < np; j++) {
-                x[j] = cheb_node(j, np);
+                x[j] = c2b_poly_cheb_node(j, np);
                 y[j] = F->fn(F->ctx, x[j], v, pb->time);
                 if (!isfinite(y[j]))
                     return c2b_error_set(err, C2B_ERR_SPEC,
@@ -142,7 +121,7 @@ static c2b_status force_degree(const c2b_problem *pb, int c, int *deg, c2b_error
                                          F->label ? F->label : "force", x[j], v);
                 scale = fmax(scale, fabs(y[j]));
             }
-            interp_monomial(np, x, y, co);
+            c2b_poly_interpolate(np, x, y, co);
             for (int j = 0; j < 4; j++) {
                 double yy = F->fn(F->ctx, uc[j], v, pb->time), p = 0;
                 for (int i = d; i >= 0; i--)
@@ -641,13 +620,16 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
             return c2b_error_set(err, C2B_ERR_ARG, "evaluation: v[%zu] is not finite", j);
     size_t nd = c2b_blend_deriv_count(order), K = (size_t)order + 1;
     double L = b->pb.dom.v1 - b->pb.dom.v0;
-    size_t maxt = 0;
-    for (int c = 0; c < C2B_NCOMP; c++)
-        if ((size_t)b->comp[c].nt > maxt)
-            maxt = (size_t)b->comp[c].nt;
-    /* Tables: gu[t][a][i] (u-profiles), fv[t][bv][j] (v-functions), acc[j]. */
-    double *gu = malloc((maxt ? maxt : 1) * K * (nu ? nu : 1) * sizeof *gu);
-    double *fv = malloc((maxt ? maxt : 1) * K * (nv ? nv : 1) * sizeof *fv);
+    size_t nt[C2B_NCOMP], tt = 0, off[C2B_NCOMP];
+    for (int c = 0; c < C2B_NCOMP; c++) {
+        nt[c] = (size_t)b->comp[c].nt;
+        off[c] = tt;
+        tt += nt[c];
+    }
+    /* Tables over all terms T of all components: gu[T][a][i] (u-profiles),
+     * fv[T][bv][j] (v-functions); acc[j] accumulates one output column. */
+    double *gu = malloc((tt ? tt : 1) * K * (nu ? nu : 1) * sizeof *gu);
+    double *fv = malloc((tt ? tt : 1) * K * (nv ? nv : 1) * sizeof *fv);
     double *acc = malloc((nv ? nv : 1) * sizeof *acc);
     double complex *phi = malloc(((size_t)b->nmodes + 1) * 4 * C2B_MAX_M * sizeof *phi);
     if (!gu || !fv || !acc || !phi) {
@@ -657,36 +639,35 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
         free(phi);
         return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory for a %zu x %zu grid", nu, nv);
     }
-    for (int c = 0; c < C2B_NCOMP; c++) {
-        const comp *cp = &b->comp[c];
-        size_t nt = (size_t)cp->nt;
-        for (size_t i = 0; i < nu; i++) {
-            /* Each mode's basis once per u (modes shared by terms of this component). */
-            for (int mi = 0; mi < b->nmodes; mi++)
-                if (b->modes[mi].opc == c || c2b_operator_equal(&b->comp[b->modes[mi].opc].op, &cp->op))
-                    c2b_mode_basis(b->modes[mi].m, u[i], order, phi + (size_t)mi * 4 * C2B_MAX_M);
-            for (size_t t = 0; t < nt; t++) {
-                const term *tm = &cp->terms[t];
+    for (size_t i = 0; i < nu; i++) {
+        /* Each cached mode's basis once per u, shared by all components and terms. */
+        for (int mi = 0; mi < b->nmodes; mi++)
+            c2b_mode_basis(b->modes[mi].m, u[i], order, phi + (size_t)mi * 4 * C2B_MAX_M);
+        for (int c = 0; c < C2B_NCOMP; c++)
+            for (size_t t = 0; t < nt[c]; t++) {
+                const term *tm = &b->comp[c].terms[t];
                 double g[4];
                 term_profile(b, tm, tm->mode >= 0 ? phi + (size_t)tm->mode * 4 * C2B_MAX_M : NULL,
                              u[i], order, g);
                 for (size_t a = 0; a < K; a++)
-                    gu[(t * K + a) * nu + i] = g[a];
+                    gu[((off[c] + t) * K + a) * nu + i] = g[a];
             }
-        }
-        for (size_t t = 0; t < nt; t++)
+    }
+    for (int c = 0; c < C2B_NCOMP; c++)
+        for (size_t t = 0; t < nt[c]; t++)
             for (size_t j = 0; j < nv; j++) {
                 double f[4];
-                c2b_vfunc_eval(&cp->terms[t].f, v[j] - b->pb.dom.v0, L, order, f);
+                c2b_vfunc_eval(&b->comp[c].terms[t].f, v[j] - b->pb.dom.v0, L, order, f);
                 for (size_t bv = 0; bv < K; bv++)
-                    fv[(t * K + bv) * nv + j] = f[bv];
+                    fv[((off[c] + t) * K + bv) * nv + j] = f[bv];
             }
+    for (int c = 0; c < C2B_NCOMP; c++)
         for (size_t i = 0; i < nu; i++)
             for (int a = 0; a <= order; a++)
                 for (int bv = 0; a + bv <= order; bv++) {
                     for (size_t j = 0; j < nv; j++)
                         acc[j] = 0.0;
-                    for (size_t t = 0; t < nt; t++) {
+                    for (size_t t = off[c]; t < off[c] + nt[c]; t++) {
                         double g = gu[(t * K + (size_t)a) * nu + i];
                         if (g == 0.0)
                             continue;
@@ -698,7 +679,6 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
                     for (size_t j = 0; j < nv; j++)
                         out[((i * nv + j) * nd + di) * 3 + (size_t)c] = acc[j];
                 }
-    }
     free(gu);
     free(fv);
     free(acc);

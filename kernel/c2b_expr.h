@@ -46,7 +46,8 @@ void c2b_expr_destroy(c2b_expr *e);
 c2b_status c2b_expr_derivative(const c2b_expr *e, char var, int k, c2b_expr **out,
                                c2b_error *err);
 
-/** Value at (u, v, t). May be non-finite (1/0); callers check. */
+/** Value at (u, v, t). May be non-finite (1/0); callers check. Uses scratch space
+ *  inside e, so one expression must not be evaluated from two threads at once. */
 double c2b_expr_eval(const c2b_expr *e, double u, double v, double t);
 
 /** 1 when the expression mentions var ('u', 'v' or 't'). */

@@ -1,8 +1,32 @@
 #include "c2b_poly.h"
 
+#include "c2b_constants.h"
+
 #include <lapacke.h>
 #include <math.h>
 #include <string.h>
+
+double c2b_poly_cheb_node(int j, int np)
+{
+    return np == 1 ? 0.5 : 0.5 - 0.5 * cos(C2B_PI * (2 * j + 1) / (2.0 * np));
+}
+
+void c2b_poly_interpolate(int np, const double *x, const double *y, double *coef)
+{
+    double dd[C2B_POLY_MAX_DEG + 1];
+    memcpy(dd, y, (size_t)np * sizeof *dd);
+    for (int k = 1; k < np; k++)
+        for (int i = np - 1; i >= k; i--)
+            dd[i] = (dd[i] - dd[i - 1]) / (x[i] - x[i - k]);
+    /* Newton form to monomials, innermost factor first. */
+    for (int i = 0; i < np; i++)
+        coef[i] = 0.0;
+    for (int k = np - 1; k >= 0; k--) {
+        for (int i = np - 1; i >= 1; i--)
+            coef[i] = coef[i - 1] - x[k] * coef[i];
+        coef[0] = -x[k] * coef[0] + dd[k];
+    }
+}
 
 void c2b_poly_zero(c2b_poly *p)
 {

@@ -28,6 +28,16 @@ typedef struct c2b_poly {
     double c[C2B_POLY_MAX_DEG + 1];
 } c2b_poly;
 
+/** Node j of np Chebyshev points on [0, 1] (0.5 when np == 1). */
+double c2b_poly_cheb_node(int j, int np);
+
+/**
+ * Monomial coefficients coef[0..np-1] of the polynomial through (x[j], y[j]),
+ * j < np (np <= C2B_POLY_MAX_DEG + 1, distinct nodes), via Newton divided differences.
+ * Well conditioned for the low degrees used here on Chebyshev nodes in [0, 1].
+ */
+void c2b_poly_interpolate(int np, const double *x, const double *y, double *coef);
+
 /** Set p to zero. */
 void c2b_poly_zero(c2b_poly *p);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "c2b_constants.h"
+#include "c2b_poly.h"
 
 /* Structure checks use 33 points with an irrational-looking spacing, so that no
  * low-frequency mode can hide in their zeros. */
@@ -144,24 +145,6 @@ static c2b_status sample(c2b_vt_fn f, void *ctx, double v, double t, double *out
     return C2B_OK;
 }
 
-/* Interpolating polynomial (monomials in x = s/L in [0,1]) through (x_j, y_j). */
-static void interp_monomial(int np, const double *x, const double *y, double *coef)
-{
-    double dd[64];
-    memcpy(dd, y, (size_t)np * sizeof *dd);
-    for (int k = 1; k < np; k++)
-        for (int i = np - 1; i >= k; i--)
-            dd[i] = (dd[i] - dd[i - 1]) / (x[i] - x[i - k]);
-    /* Newton form to monomials, innermost first. */
-    for (int i = 0; i < np; i++)
-        coef[i] = 0.0;
-    for (int k = np - 1; k >= 0; k--) {
-        for (int i = np - 1; i >= 1; i--)
-            coef[i] = coef[i - 1] - x[k] * coef[i];
-        coef[0] = -x[k] * coef[0] + dd[k];
-    }
-}
-
 static double horner(const double *c, int deg, double x)
 {
     double a = 0.0;
@@ -178,16 +161,17 @@ static c2b_status try_polynomial(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx,
 {
     double L = dom->v1 - dom->v0;
     *found = 0;
-    for (int d = 0; d <= tol->max_poly_degree; d++) {
+    int dmax = tol->max_poly_degree < C2B_POLY_MAX_DEG ? tol->max_poly_degree : C2B_POLY_MAX_DEG;
+    for (int d = 0; d <= dmax; d++) {
         int np = d + 1;
-        double x[64], y[64], coef[64];
+        double x[C2B_POLY_MAX_DEG + 1], y[C2B_POLY_MAX_DEG + 1], coef[C2B_POLY_MAX_DEG + 1];
         for (int j = 0; j < np; j++) {
-            x[j] = np == 1 ? 0.5 : 0.5 - 0.5 * cos(C2B_PI * (2 * j + 1) / (2.0 * np));
+            x[j] = c2b_poly_cheb_node(j, np);
             c2b_status st = sample(f, ctx, dom->v0 + x[j] * L, t, &y[j], err);
             if (st)
                 return st;
         }
-        interp_monomial(np, x, y, coef);
+        c2b_poly_interpolate(np, x, y, coef);
         double e = 0.0;
         for (int i = 0; i < NCHECK; i++)
             e = fmax(e, fabs(horner(coef, d, xc[i]) - yc[i]));

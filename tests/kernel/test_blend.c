@@ -37,6 +37,19 @@ static c2b_blend *blend_from(const c2b_spec *s, double t)
     return b;
 }
 
+/* Parse, build at time t and report; on failure the spec is freed and NULL returned. */
+static c2b_blend *open_blend(const char *json, double t, const char *what, c2b_spec **spec)
+{
+    *spec = spec_from(json);
+    c2b_blend *b = *spec ? blend_from(*spec, t) : NULL;
+    if (!check_true(what, b != NULL)) {
+        c2b_spec_destroy(*spec);
+        *spec = NULL;
+    }
+    return b;
+}
+
+
 /* All 10 derivative entries at one point. */
 static void eval10(const c2b_blend *b, double u, double v, double *o)
 {
@@ -190,12 +203,10 @@ static void test_open_cubic(void)
         "{\"v_range\": [0, 2], \"shape\": [1.3, -0.7, 2.0, 0.5],"
         " \"boundary\": {\"u0\": [[\"v\", \"0.5*v^3-v\", \"1+0.2*v^2\"], [\"0\", \"v^2\", \"1\"], [\"0.1*v^3\", \"0\", \"0\"]],"
         "              \"u1\": [[\"v+0.3\", \"2-v^3\", \"-1+v\"], [\"v^3\", \"0\", \"-1\"], [\"0\", \"1\", \"v^2\"]]}}";
-    c2b_spec *s = spec_from(J);
-    c2b_blend *b = s ? blend_from(s, 0) : NULL;
-    if (!check_true("open cubic blend created", b != NULL)) {
-        c2b_spec_destroy(s);
+    c2b_spec *s = NULL;
+    c2b_blend *b = open_blend(J, 0, "open cubic blend created", &s);
+    if (!b)
         return;
-    }
     /* Hand-written data at v = 1.3. */
     double v = 1.3, o0[30], o1[30];
     eval10(b, 0, v, o0);
@@ -309,12 +320,10 @@ static void test_force(void)
         " \"boundary\": {\"u0\": [[\"cos(v)\", \"sin(v)\", \"1\"], [\"0\", \"0\", \"-1\"], [\"0\", \"0\", \"0\"]],"
         "              \"u1\": [[\"2*cos(v)\", \"2*sin(v)\", \"0\"], [\"0\", \"0\", \"-1\"], [\"0\", \"0\", \"0\"]]},"
         " \"force\": [\"100*(1+u^2)*cos(v)\", \"100*(1+u^2)*sin(v)\", \"-50*u\"]}";
-    c2b_spec *s = spec_from(J);
-    c2b_blend *b = s ? blend_from(s, 0) : NULL;
-    if (!check_true("forced blend created", b != NULL)) {
-        c2b_spec_destroy(s);
+    c2b_spec *s = NULL;
+    c2b_blend *b = open_blend(J, 0, "forced blend created", &s);
+    if (!b)
         return;
-    }
     double shape[4] = {1, 1, 1, 1}, worst = 0;
     for (int k = 0; k < 4; k++) {
         double u = 0.2 + 0.2 * k, v = 0.4 + 1.3 * k;
@@ -375,12 +384,10 @@ static void test_ode(void)
         "{\"continuity\": \"ODE\", \"shape\": [1, -2, 0.5], \"v_range\": [0, 1],"
         " \"boundary\": {\"u0\": [[\"exp(v)\", \"v^2\", \"sin(3*v)\"], [\"1\", \"v\", \"0\"], [\"0\", \"1\", \"v\"]],"
         "              \"u1\": [[\"1+v\", \"cos(v)\", \"2\"], [\"0\", \"-1\", \"1\"], [\"v^3\", \"0\", \"1\"]]}}";
-    c2b_spec *s = spec_from(J);
-    c2b_blend *b = s ? blend_from(s, 0) : NULL;
-    if (!check_true("ODE blend created", b != NULL)) {
-        c2b_spec_destroy(s);
+    c2b_spec *s = NULL;
+    c2b_blend *b = open_blend(J, 0, "ODE blend created", &s);
+    if (!b)
         return;
-    }
     double v = 0.37;
     double data[3][6] = {{exp(v), 1, 0, 1 + v, 0, v * v * v},
                          {v * v, v, 1, cos(v), -1, 0},
@@ -464,12 +471,10 @@ static void test_per_component_shape(void)
         "{\"shape\": {\"x\": [1, 1, 1, 1], \"y\": [-1.8, 1, 1, 1], \"z\": [1, -7, 1, 1]}, \"periodic\": true,"
         " \"boundary\": {\"u0\": [[\"sin(2*pi*v)\", \"sin(2*pi*v)\", \"sin(2*pi*v)\"], [\"0\", \"0\", \"0\"], [\"0\", \"0\", \"0\"]],"
         "              \"u1\": [[\"2*sin(2*pi*v)\", \"2*sin(2*pi*v)\", \"2*sin(2*pi*v)\"], [\"0\", \"0\", \"0\"], [\"0\", \"0\", \"0\"]]}}";
-    c2b_spec *s = spec_from(J);
-    c2b_blend *b = s ? blend_from(s, 0) : NULL;
-    if (!check_true("per-component blend created", b != NULL)) {
-        c2b_spec_destroy(s);
+    c2b_spec *s = NULL;
+    c2b_blend *b = open_blend(J, 0, "per-component blend created", &s);
+    if (!b)
         return;
-    }
     const double beta = -4 * C2B_PI * C2B_PI;
     double shapes[3][4] = {{1, 1, 1, 1}, {-1.8, 1, 1, 1}, {1, -7, 1, 1}};
     double d[6] = {1, 0, 0, 2, 0, 0}, u = 0.43, v = 0.25, o[30];

@@ -41,53 +41,42 @@ static c2b_mode *make(c2b_continuity cont, const double *shape, double beta)
     return m;
 }
 
-static void test_quintic_hermite(void)
+/* A beta = 0 mode against a Hermite basis given by monomial coefficients. */
+static void hermite_case(const char *name, c2b_continuity cont, const double *shape,
+                         const double (*basis)[6], int deg, const double *d)
 {
-    /* Thesis eq. (18), expanded by hand into monomials. */
-    static const double g[6][6] = {
-        {1, 0, 0, -10, 15, -6},   {0, 1, 0, -6, 8, -3},    {0, 0, 0.5, -1.5, 1.5, -0.5},
-        {0, 0, 0, 10, -15, 6},    {0, 0, 0, -4, 7, -3},    {0, 0, 0, 0.5, -1, 0.5}};
-    double shape[4] = {1, 1, 1, 1};
-    c2b_mode *m = make(C2B_C2, shape, 0.0);
-    if (!check_true("C2 beta=0 mode created", m != NULL))
+    int m2 = 2 * c2b_continuity_n(cont);
+    c2b_mode *m = make(cont, shape, 0.0);
+    char what[96];
+    snprintf(what, sizeof what, "%s: beta=0 mode created", name);
+    if (!check_true(what, m != NULL))
         return;
-    const double d[6] = {0.3, -1.0, 2.0, 1.5, 0.7, -3.0};
     for (int k = 0; k < NU; k++) {
         double G[4];
         c2b_mode_eval(m, d, US[k], 3, G);
         for (int q = 0; q <= 3; q++) {
             double want = 0;
-            for (int j = 0; j < 6; j++)
-                want += d[j] * mono(g[j], 5, q, US[k]);
-            char what[96];
-            snprintf(what, sizeof what, "quintic Hermite G^(%d)(%.2f)", q, US[k]);
+            for (int j = 0; j < m2; j++)
+                want += d[j] * mono(basis[j], deg, q, US[k]);
+            snprintf(what, sizeof what, "%s G^(%d)(%.2f)", name, q, US[k]);
             check_close(what, G[q], want, 1e-12, 1e-12);
         }
     }
     c2b_mode_destroy(m);
 }
 
-static void test_cubic_hermite(void)
+static void test_hermite(void)
 {
-    static const double h[4][4] = {{1, 0, -3, 2}, {0, 1, -2, 1}, {0, 0, 3, -2}, {0, 0, -1, 1}};
-    double shape[3] = {1, 1, 1};
-    c2b_mode *m = make(C2B_C1, shape, 0.0);
-    if (!check_true("C1 beta=0 mode created", m != NULL))
-        return;
-    const double d[4] = {1.0, -2.0, 0.5, 4.0};
-    for (int k = 0; k < NU; k++) {
-        double G[4];
-        c2b_mode_eval(m, d, US[k], 3, G);
-        for (int q = 0; q <= 3; q++) {
-            double want = 0;
-            for (int j = 0; j < 4; j++)
-                want += d[j] * mono(h[j], 3, q, US[k]);
-            char what[96];
-            snprintf(what, sizeof what, "cubic Hermite G^(%d)(%.2f)", q, US[k]);
-            check_close(what, G[q], want, 1e-12, 1e-12);
-        }
-    }
-    c2b_mode_destroy(m);
+    /* Thesis eq. (18), expanded by hand into monomials. */
+    static const double quintic[6][6] = {
+        {1, 0, 0, -10, 15, -6},   {0, 1, 0, -6, 8, -3},    {0, 0, 0.5, -1.5, 1.5, -0.5},
+        {0, 0, 0, 10, -15, 6},    {0, 0, 0, -4, 7, -3},    {0, 0, 0, 0.5, -1, 0.5}};
+    /* Cubic Hermite: h00, h10, h01, h11. */
+    static const double cubic[4][6] = {{1, 0, -3, 2}, {0, 1, -2, 1}, {0, 0, 3, -2}, {0, 0, -1, 1}};
+    const double s4[4] = {1, 1, 1, 1}, s3[3] = {1, 1, 1};
+    const double d6[6] = {0.3, -1.0, 2.0, 1.5, 0.7, -3.0}, d4[4] = {1.0, -2.0, 0.5, 4.0};
+    hermite_case("quintic Hermite (C2)", C2B_C2, s4, quintic, 5, d6);
+    hermite_case("cubic Hermite (C1)", C2B_C1, s3, cubic, 3, d4);
 }
 
 /* Compare with the collocation oracle: c_k = a_k beta^k computed here. */
@@ -282,8 +271,7 @@ static void test_bad_operator(void)
 
 int main(void)
 {
-    test_quintic_hermite();
-    test_cubic_hermite();
+    test_hermite();
     test_against_collocation();
     test_repeated_roots();
     test_near_repeated();
