@@ -688,6 +688,8 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
 
 int c2b_blend_constraints(const c2b_blend *b) { return b->n; }
 
+c2b_vdomain c2b_blend_domain(const c2b_blend *b) { return b->pb.dom; }
+
 c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, double *scale,
                                        c2b_error *err)
 {

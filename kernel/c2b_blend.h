@@ -90,6 +90,9 @@ double c2b_blend_truncation_error(const c2b_blend *b);
 c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, double *scale,
                                        c2b_error *err);
 
+/** The v-domain (range and periodicity) of the blend. */
+c2b_vdomain c2b_blend_domain(const c2b_blend *b);
+
 /** Constraints per trimline n (2 for C1, 3 for C2 and ODE, 4 for C3). */
 int c2b_blend_constraints(const c2b_blend *b);
 

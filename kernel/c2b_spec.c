@@ -7,13 +7,29 @@
 #include <string.h>
 
 #include "c2b_expr.h"
+#include "c2b_nurbs.h"
+#include "c2b_nurbs_json.h"
 
 #define MAX_CONSTANTS 256
 #define LABEL_LEN 96
 
 /* Context of one boundary function: sign * d^p S/du^p at u = trim (primaries) or a
  * v,t-expression (explicit boundary data). */
+/* A primary surface: expressions in (u, v, t) or a NURBS surface. */
+typedef struct primary {
+    int kind;                   /* 0 none (explicit boundary data), 1 expressions, 2 NURBS */
+    c2b_expr *surf[C2B_NCOMP];  /* S(u, v, t) per component */
+    c2b_expr *deriv[C2B_NCOMP][6]; /* derived on first use: S, S_u, S_v, S_uu, S_uv, S_vv */
+    int deriv_failed;
+    c2b_nurbs_surface *nurbs;
+    int across_v;               /* NURBS trimmed along v = trim (trim_v) */
+    double trim, dir;
+    double map0, map1;          /* NURBS along-trimline parameter = map0 + map1 (v - v0) */
+} primary;
+
 typedef struct datum {
+    const primary *prim; /* NURBS data: the primary; NULL for expressions and samples */
+    int comp, order;     /* NURBS data: component and derivative order */
     c2b_expr *e;     /* function of (u,) v, t */
     c2b_expr *evv;   /* its second v-derivative, derived on first use */
     int evv_failed;
@@ -30,6 +46,7 @@ typedef struct forcing {
 
 struct c2b_spec {
     c2b_problem pb;
+    primary prim[2];
     datum data[C2B_NCOMP][2][C2B_MAX_N];
     forcing force[C2B_NCOMP];
     char *cnames[MAX_CONSTANTS];
@@ -38,9 +55,25 @@ struct c2b_spec {
     char name[128];
 };
 
+/* d^order/dcross^order d^dv/dalong^dv of a NURBS primary at blend parameter v. */
+static double nurbs_datum(const datum *d, double v0, double v, int dv)
+{
+    const primary *pr = d->prim;
+    double a = pr->map0 + pr->map1 * (v - v0), skl[(C2B_MAX_N + 1) * 3 * 3];
+    int k = d->order;
+    c2b_status st = pr->across_v ? c2b_nurbs_surface_derivs(pr->nurbs, a, pr->trim, dv, k, skl, NULL)
+                                 : c2b_nurbs_surface_derivs(pr->nurbs, pr->trim, a, k, dv, skl, NULL);
+    if (st)
+        return NAN;
+    int idx = pr->across_v ? dv * (k + 1) + k : k * (dv + 1) + dv;
+    return d->sign * pow(pr->map1, dv) * skl[idx * 3 + d->comp];
+}
+
 static double datum_fn(void *ctx, double v, double t)
 {
     const datum *d = ctx;
+    if (d->prim)
+        return nurbs_datum(d, d->u, v, 0);
     return d->sign * c2b_expr_eval(d->e, d->u, v, t);
 }
 
@@ -50,6 +83,8 @@ static double datum_fn(void *ctx, double v, double t)
 static double datum_vv(void *ctx, double v, double t)
 {
     datum *d = ctx;
+    if (d->prim)
+        return nurbs_datum(d, d->u, v, 2);
     if (!d->evv && !d->evv_failed && c2b_expr_derivative(d->e, 'v', 2, &d->evv, NULL))
         d->evv_failed = 1;
     return d->evv ? d->sign * c2b_expr_eval(d->evv, d->u, v, t) : NAN;
@@ -74,12 +109,70 @@ void c2b_spec_destroy(c2b_spec *s)
             }
         c2b_expr_destroy(s->force[c].e);
     }
+    for (int i = 0; i < 2; i++) {
+        for (int c = 0; c < C2B_NCOMP; c++) {
+            c2b_expr_destroy(s->prim[i].surf[c]);
+            for (int k = 0; k < 6; k++)
+                c2b_expr_destroy(s->prim[i].deriv[c][k]);
+        }
+        c2b_nurbs_surface_destroy(s->prim[i].nurbs);
+    }
     for (int i = 0; i < s->nconst; i++)
         free(s->cnames[i]);
     free(s);
 }
 
 const c2b_problem *c2b_spec_problem(const c2b_spec *s) { return &s->pb; }
+
+int c2b_spec_has_primaries(const c2b_spec *s) { return s->prim[0].kind != 0; }
+
+c2b_status c2b_spec_primary_eval(c2b_spec *s, int side, double ub, double v, double t, int order,
+                                 double *out, c2b_error *err)
+{
+    if (!s || (side != 0 && side != 1) || order < 0 || order > 2 || !out)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_spec_primary_eval: invalid arguments");
+    primary *pr = &s->prim[side];
+    if (!pr->kind)
+        return c2b_error_set(err, C2B_ERR_ARG, "the spec gives boundary data, not primary surfaces");
+    double cross = pr->trim + pr->dir * (ub - side), dc = pr->dir;
+    size_t nd = (size_t)(order + 1) * (size_t)(order + 2) / 2;
+    /* entry e = (a, b): a cross derivatives, b along derivatives */
+    static const int ea[6] = {0, 1, 0, 2, 1, 0}, eb[6] = {0, 0, 1, 0, 1, 2};
+    if (pr->kind == 2) {
+        double a = pr->map0 + pr->map1 * (v - s->pb.dom.v0), skl[3 * 3 * 3];
+        c2b_status st = pr->across_v ? c2b_nurbs_surface_derivs(pr->nurbs, a, cross, order, order, skl, err)
+                                     : c2b_nurbs_surface_derivs(pr->nurbs, cross, a, order, order, skl, err);
+        if (st)
+            return c2b_error_prefix(err, "primaries[%d]: ", side);
+        for (size_t e = 0; e < nd; e++) {
+            int ka = ea[e], kb = eb[e];
+            int idx = pr->across_v ? kb * (order + 1) + ka : ka * (order + 1) + kb;
+            double f = pow(dc, ka) * pow(pr->map1, kb);
+            for (int c = 0; c < 3; c++)
+                out[e * 3 + (size_t)c] = f * skl[idx * 3 + c];
+        }
+        return C2B_OK;
+    }
+    for (int c = 0; c < C2B_NCOMP; c++)
+        for (size_t e = 0; e < nd; e++) {
+            c2b_expr **slot = &pr->deriv[c][e];
+            if (!*slot && !pr->deriv_failed) {
+                c2b_expr *du = NULL;
+                c2b_status st = c2b_expr_derivative(pr->surf[c], 'u', ea[e], &du, err);
+                if (!st)
+                    st = c2b_expr_derivative(du, 'v', eb[e], slot, err);
+                c2b_expr_destroy(du);
+                if (st) {
+                    pr->deriv_failed = 1;
+                    return c2b_error_prefix(err, "primaries[%d].surface[%d]: ", side, c);
+                }
+            }
+            if (!*slot)
+                return c2b_error_set(err, C2B_ERR_NUMERIC, "primaries[%d]: derivatives unavailable", side);
+            out[e * 3 + (size_t)c] = pow(dc, ea[e]) * c2b_expr_eval(*slot, cross, v, t);
+        }
+    return C2B_OK;
+}
 const char *c2b_spec_name(const c2b_spec *s) { return s->name; }
 
 /* ---- helpers that name the field ----------------------------------------------------- */
@@ -250,62 +343,121 @@ static void bind_expr_datum(c2b_spec *s, int c, int side, int p, c2b_expr *e, do
     bf->label = d->label;
 }
 
+/* Data of a NURBS primary: d^k/dcross^k at the trim parameter, sampled along the
+ * trimline with the other parameter mapped linearly from v_range. */
+static c2b_status parse_nurbs_primary(c2b_spec *s, const cJSON *j, int side, const char *where,
+                                      c2b_error *err)
+{
+    primary *pr = &s->prim[side];
+    char f[LABEL_LEN];
+    snprintf(f, sizeof f, "%s.nurbs", where);
+    c2b_status st = c2b_nurbs_surface_from_json(cJSON_GetObjectItemCaseSensitive(j, "nurbs"), f,
+                                                &pr->nurbs, err);
+    if (st)
+        return st;
+    const cJSON *tu = cJSON_GetObjectItemCaseSensitive(j, "trim_u");
+    const cJSON *tv = cJSON_GetObjectItemCaseSensitive(j, "trim_v");
+    if (!!tu == !!tv)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: give exactly one of trim_u and trim_v", where);
+    pr->across_v = tv != NULL;
+    snprintf(f, sizeof f, "%s.%s", where, tv ? "trim_v" : "trim_u");
+    if ((st = want_number(tv ? tv : tu, f, &pr->trim, err)))
+        return st;
+    double dom[4];
+    c2b_nurbs_surface_domain(pr->nurbs, dom);
+    int cross = pr->across_v, along = !cross;
+    double lo = dom[2 * cross], hi = dom[2 * cross + 1];
+    if (!c2b_nurbs_surface_periodic(pr->nurbs, cross) &&
+        (pr->trim < lo - 1e-12 * (hi - lo) || pr->trim > hi + 1e-12 * (hi - lo)))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: %g is outside the knot range [%g, %g]", f,
+                             pr->trim, lo, hi);
+    pr->map0 = dom[2 * along];
+    pr->map1 = (dom[2 * along + 1] - dom[2 * along]) / (s->pb.dom.v1 - s->pb.dom.v0);
+    int n = c2b_continuity_n(s->pb.continuity);
+    for (int c = 0; c < C2B_NCOMP; c++) {
+        double sign = 1.0;
+        for (int p = 0; p < n; p++) {
+            datum *d = &s->data[c][side][p];
+            d->prim = pr;
+            d->comp = c;
+            d->order = p;
+            d->u = s->pb.dom.v0; /* the start of v_range, for the parameter map */
+            d->sign = sign;
+            snprintf(d->label, LABEL_LEN, "%s.nurbs (d^%d/d%c^%d at %c=%g, component %c)", where, p,
+                     tv ? 'v' : 'u', p, tv ? 'v' : 'u', pr->trim, "xyz"[c]);
+            c2b_bfunc *bf = &s->pb.data[c][side][p];
+            bf->fn = datum_fn;
+            bf->fn_vv = datum_vv;
+            bf->ctx = d;
+            bf->time_dependent = 0;
+            bf->label = d->label;
+            sign *= pr->dir;
+        }
+    }
+    pr->kind = 2;
+    return C2B_OK;
+}
+
 static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error *err)
 {
     char where[LABEL_LEN];
     snprintf(where, sizeof where, "primaries[%d]", side);
     if (!cJSON_IsObject(j))
         return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an object", where);
-    static const char *const keys[] = {"surface", "trim_u", "direction", "name", NULL};
+    static const char *const keys[] = {"surface", "nurbs", "trim_u", "trim_v", "direction", "name", NULL};
     c2b_status st = check_keys(j, where, keys, err);
     if (st)
         return st;
+    primary *pr = &s->prim[side];
     const cJSON *surf = cJSON_GetObjectItemCaseSensitive(j, "surface");
+    const cJSON *nj = cJSON_GetObjectItemCaseSensitive(j, "nurbs");
     const cJSON *tj = cJSON_GetObjectItemCaseSensitive(j, "trim_u");
     const cJSON *dj = cJSON_GetObjectItemCaseSensitive(j, "direction");
-    if (!surf)
-        return c2b_error_set(err, C2B_ERR_SPEC, "%s.surface: missing", where);
+    char f[LABEL_LEN];
+    pr->dir = 1.0;
+    if (dj) {
+        snprintf(f, sizeof f, "%s.direction", where);
+        st = want_number(dj, f, &pr->dir, err);
+        if (st)
+            return st;
+        if (pr->dir != 1.0 && pr->dir != -1.0)
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: must be 1 or -1, got %g", f, pr->dir);
+    }
+    if (!!surf == !!nj)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: give exactly one of 'surface' and 'nurbs'", where);
+    if (nj)
+        return parse_nurbs_primary(s, j, side, where, err);
+    if (cJSON_GetObjectItemCaseSensitive(j, "trim_v"))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s.trim_v: only NURBS primaries take trim_v", where);
     if (!tj)
         return c2b_error_set(err, C2B_ERR_SPEC, "%s.trim_u: missing", where);
     if (!cJSON_IsArray(surf) || cJSON_GetArraySize(surf) != 3)
         return c2b_error_set(err, C2B_ERR_SPEC,
                              "%s.surface: expected 3 expressions [x, y, z] in u, v, t", where);
-    char f[LABEL_LEN];
     snprintf(f, sizeof f, "%s.trim_u", where);
-    double tu = 0, dir = 1.0;
-    st = want_number(tj, f, &tu, err);
+    st = want_number(tj, f, &pr->trim, err);
     if (st)
         return st;
-    if (dj) {
-        snprintf(f, sizeof f, "%s.direction", where);
-        st = want_number(dj, f, &dir, err);
-        if (st)
-            return st;
-        if (dir != 1.0 && dir != -1.0)
-            return c2b_error_set(err, C2B_ERR_SPEC, "%s: must be 1 or -1, got %g", f, dir);
-    }
+    pr->kind = 1;
     int n = c2b_continuity_n(s->pb.continuity);
     int c = 0;
     for (const cJSON *x = surf->child; x; x = x->next, c++) {
         snprintf(f, sizeof f, "%s.surface[%d]", where, c);
-        c2b_expr *e = NULL;
-        st = make_expr(s, x, f, C2B_EXPR_U | C2B_EXPR_V | C2B_EXPR_T, &e, err);
+        st = make_expr(s, x, f, C2B_EXPR_U | C2B_EXPR_V | C2B_EXPR_T, &pr->surf[c], err);
         if (st)
             return st;
         /* C_p = direction^p d^p S / du^p at u = trim_u (thesis sign convention) */
         double sign = 1.0;
         for (int p = 0; p < n; p++) {
             c2b_expr *dp = NULL;
-            st = c2b_expr_derivative(e, 'u', p, &dp, err);
-            if (st) {
-                c2b_expr_destroy(e);
+            st = c2b_expr_derivative(pr->surf[c], 'u', p, &dp, err);
+            if (st)
                 return c2b_error_prefix(err, "%s: ", f);
-            }
-            snprintf(s->data[c][side][p].label, LABEL_LEN, "%s (d^%d/du^%d at u=%g)", f, p, p, tu);
-            bind_expr_datum(s, c, side, p, dp, tu, sign);
-            sign *= dir;
+            snprintf(s->data[c][side][p].label, LABEL_LEN, "%s (d^%d/du^%d at u=%g)", f, p, p,
+                     pr->trim);
+            bind_expr_datum(s, c, side, p, dp, pr->trim, sign);
+            sign *= pr->dir;
         }
-        c2b_expr_destroy(e);
     }
     return C2B_OK;
 }
@@ -528,6 +680,11 @@ static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
     j = cJSON_GetObjectItemCaseSensitive(root, "force");
     if (j && (st = parse_force(s, j, err)))
         return st;
+    /* NURBS data are piecewise polynomial: their mode expansions converge algebraically,
+     * so the default target is 1e-9 of the data scale unless the spec sets one. */
+    if ((s->prim[0].kind == 2 || s->prim[1].kind == 2) &&
+        !cJSON_GetObjectItemCaseSensitive(root, "tolerance"))
+        s->pb.tol.truncation_rel = 1e-9;
     return C2B_OK;
 }
 

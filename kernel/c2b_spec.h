@@ -45,6 +45,24 @@ void c2b_spec_destroy(c2b_spec *s);
 /** The problem described by the spec (owned by the spec). */
 const c2b_problem *c2b_spec_problem(const c2b_spec *s);
 
+/** 1 when the spec defines primary surfaces (not explicit boundary data). */
+int c2b_spec_has_primaries(const c2b_spec *s);
+
+/**
+ * Evaluate primary `side` (0 or 1) in extended blend coordinates: the primary
+ * continues the blend's parametrisation beyond its trimline, ub <= 0 for side 0 and
+ * ub >= 1 for side 1, with the primary's cross parameter = trim + direction (ub - side)
+ * and its along-trimline parameter the blend's v (mapped linearly onto a NURBS
+ * domain). With this parametrisation the blend's boundary data are exactly the
+ * primary's derivatives at ub = side. Writes derivatives of total order <= order
+ * (<= 2) in the blend layout [S, Su, Sv, Suu, Suv, Svv] x 3 into out. Expression
+ * derivatives are derived symbolically on first use (so s is not const).
+ * @return C2B_OK; C2B_ERR_ARG for boundary-data specs or a NURBS parameter outside its
+ *         domain; C2B_ERR_NOMEM.
+ */
+c2b_status c2b_spec_primary_eval(c2b_spec *s, int side, double ub, double v, double t, int order,
+                                 double *out, c2b_error *err);
+
 /** The spec's "name", or "" when absent. */
 const char *c2b_spec_name(const c2b_spec *s);
 

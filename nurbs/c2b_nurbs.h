@@ -1,8 +1,15 @@
 /**
  * @file c2b_nurbs.h
- * NURBS curves and surfaces: evaluation with all partial derivatives (rational
- * derivatives, Piegl & Tiller, The NURBS Book, A2.3, A3.2, A3.6, A4.2, A4.4), knot
- * insertion (A5.1), degree elevation (A5.9) and point projection.
+ * NURBS curves and surfaces: evaluation with all partial derivatives (Piegl & Tiller,
+ * The NURBS Book: basis functions A2.2, derivatives through derivative control points
+ * A3.3/A3.4 and A3.7/A3.8, rational derivatives A4.2/A4.4), knot insertion (A5.1),
+ * degree elevation (Prautzsch's identity with knot insertion: only convex combinations;
+ * A5.9 loses up to 1e-12 where knot spans differ much in length) and point projection.
+ *
+ * Knot multiplicities are at most p + 1 at the ends of a non-periodic domain (and
+ * outside it) and at most p inside it and anywhere in a periodic direction. When all
+ * weights are equal the spline is evaluated as a polynomial spline (derivatives of order
+ * above the degree are exactly zero).
  *
  * Representation. Poles are given and returned as [x, y, z, w] (Cartesian point and
  * weight, w > 0); internally they are homogeneous [x w, y w, z w, w].
@@ -54,6 +61,15 @@ typedef struct c2b_nurbs_surface c2b_nurbs_surface;
 c2b_status c2b_nurbs_curve_create(int p, int n, const double *knots, const double *poles,
                                   int periodic, c2b_nurbs_curve **out, c2b_error *err);
 
+/**
+ * As c2b_nurbs_curve_create(), with every message prefixed by the field path `path`
+ * (e.g. "curves[0]" gives "curves[0].knots: decreasing at index 5 (0.4 after 0.5)" and
+ * "curves[0]: degree must be 1..15 (got 0)"). path may be NULL or empty.
+ */
+c2b_status c2b_nurbs_curve_create_at(int p, int n, const double *knots, const double *poles,
+                                     int periodic, const char *path, c2b_nurbs_curve **out,
+                                     c2b_error *err);
+
 /** Free a curve. NULL-safe. */
 void c2b_nurbs_curve_destroy(c2b_nurbs_curve *c);
 
@@ -82,11 +98,17 @@ void c2b_nurbs_curve_pole(const c2b_nurbs_curve *c, int i, double *out);
 c2b_status c2b_nurbs_curve_eval(const c2b_nurbs_curve *c, double t, int order, double *out,
                                 c2b_error *err);
 
-/** Insert knot t `times` times (shape unchanged). @return C2B_OK; C2B_ERR_ARG when t is
- *  outside the domain or the multiplicity would exceed p; C2B_ERR_NOMEM. */
+/** Insert knot t `times` times (shape unchanged; periodic curves insert t + m T for every
+ *  m, one pole per insertion). @return C2B_OK; C2B_ERR_ARG when t is outside the domain
+ *  or the multiplicity would exceed p; C2B_ERR_LIMIT beyond C2B_NURBS_MAX_POLES poles;
+ *  C2B_ERR_NOMEM. On failure the curve is unchanged. */
 c2b_status c2b_nurbs_curve_insert_knot(c2b_nurbs_curve *c, double t, int times, c2b_error *err);
 
-/** Raise the degree by `times` (shape unchanged; non-periodic curves). */
+/** Raise the degree by `times` (shape unchanged; non-periodic curves; an unclamped knot
+ *  vector becomes clamped, with the same domain). Every new pole is a convex combination
+ *  of the old ones. @return C2B_OK; C2B_ERR_ARG for a periodic curve, times < 0 or a
+ *  degree above C2B_NURBS_MAX_DEGREE; C2B_ERR_LIMIT; C2B_ERR_NOMEM. On failure the curve
+ *  is unchanged. */
 c2b_status c2b_nurbs_curve_elevate(c2b_nurbs_curve *c, int times, c2b_error *err);
 
 /**
@@ -110,6 +132,13 @@ c2b_status c2b_nurbs_surface_create(int p, int q, int nu, int nv, const double *
                                     const double *knots_v, const double *poles,
                                     const int *periodic, c2b_nurbs_surface **out,
                                     c2b_error *err);
+
+/** As c2b_nurbs_surface_create(), with every message prefixed by the field path `path`
+ *  ("primaries[0].nurbs.knots_u: ..."). path may be NULL or empty. */
+c2b_status c2b_nurbs_surface_create_at(int p, int q, int nu, int nv, const double *knots_u,
+                                       const double *knots_v, const double *poles,
+                                       const int *periodic, const char *path,
+                                       c2b_nurbs_surface **out, c2b_error *err);
 
 /** Free a surface. NULL-safe. */
 void c2b_nurbs_surface_destroy(c2b_nurbs_surface *s);
@@ -141,22 +170,31 @@ c2b_status c2b_nurbs_surface_derivs(const c2b_nurbs_surface *s, double u, double
                                     int dv, double *skl, c2b_error *err);
 
 /**
- * Point and all partial derivatives of total order <= order (<= 3), in the blend layout
- * [S, Su, Sv, Suu, Suv, Svv, Suuu, Suuv, Suvv, Svvv] x 3.
+ * Point and all partial derivatives of total order <= order, in the blend layout
+ * [S, Su, Sv, Suu, Suv, Svv, Suuu, Suuv, Suvv, Svvv] x 3 (order <= 3 as in c2b_blend.h;
+ * up to C2B_NURBS_MAX_DERIV accepted, block k listing d^k/du^(k-j) dv^j for j = 0..k).
+ * @return as c2b_nurbs_surface_derivs().
  */
 c2b_status c2b_nurbs_surface_eval(const c2b_nurbs_surface *s, double u, double v, int order,
                                   double *out, c2b_error *err);
 
-/** Insert knot t `times` times in direction dir. */
+/** Insert knot t `times` times in direction dir (0 = u, 1 = v); as
+ *  c2b_nurbs_curve_insert_knot(). */
 c2b_status c2b_nurbs_surface_insert_knot(c2b_nurbs_surface *s, int dir, double t, int times,
                                          c2b_error *err);
 
-/** Raise the degree in direction dir by `times` (non-periodic directions). */
+/** Raise the degree in direction dir by `times` (non-periodic directions); as
+ *  c2b_nurbs_curve_elevate(). */
 c2b_status c2b_nurbs_surface_elevate(c2b_nurbs_surface *s, int dir, int times, c2b_error *err);
 
 /**
  * Closest point on the surface: uv[2] minimising |S(u, v) - point| (grid search, then
  * Newton with bound handling), and the distance.
+ * Method: 8 samples per knot span and direction (fewer when the grid would exceed 1e6
+ * points), Newton on |S - P|^2 / 2 with the full Hessian from the 4 best samples, a
+ * parameter at a non-periodic bound with the gradient pointing outward held there,
+ * periodic parameters wrapped. dist may be NULL.
+ * @return C2B_OK; C2B_ERR_ARG for NULL arguments or a non-finite point; C2B_ERR_NOMEM.
  */
 c2b_status c2b_nurbs_surface_project(const c2b_nurbs_surface *s, const double *point,
                                      double *uv, double *dist, c2b_error *err);

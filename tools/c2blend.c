@@ -3,6 +3,8 @@
  *
  *   c2blend eval SPEC [--u N --v M | --points FILE] [--t T] [--derivs]
  *   c2blend info SPEC [--t T]
+ *   c2blend fit  SPEC [--t T] [--tol 1e-6] [--degree-v 3|5] [--max-poles N] -o OUT.json [--iges OUT.igs]
+ *   c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}
  *
  * Exit codes: 0 success, 2 bad usage or bad spec, 3 numerical failure (resonant or
  * ill-conditioned mode), 4 out of memory. Errors go to stderr; stdout receives
@@ -14,7 +16,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
+#include "c2b_atomic.h"
 #include "c2b_blend.h"
+#include "c2b_fit.h"
+#include "c2b_iges.h"
+#include "c2b_mesh.h"
+#include "c2b_nurbs_json.h"
 #include "c2b_spec.h"
 
 #define EXIT_USAGE 2
@@ -24,6 +33,8 @@
 static const char USAGE[] =
     "usage: c2blend eval SPEC [--u N --v M | --points FILE] [--t T] [--derivs]\n"
     "       c2blend info SPEC [--t T]\n"
+    "       c2blend fit  SPEC [--t T] [--tol 1e-6] [--degree-v 3|5] [--max-poles N] -o OUT.json [--iges OUT.igs]\n"
+    "       c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}\n"
     "SPEC is a JSON blend spec (see README.md), '-' for standard input.\n";
 
 static int exit_code(c2b_status st)
@@ -71,16 +82,45 @@ static int parse_count(const char *s, long *out)
 }
 
 typedef struct options {
-    const char *command, *spec, *points;
-    long nu, nv;
-    double t;
+    const char *command, *spec, *points, *out, *iges;
+    long nu, nv, nmesh, degree_v, max_poles;
+    double t, tol, width;
     int have_t, derivs;
 } options;
+
+static int parse_long(const char *s, long lo, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* Which command may take which option. */
+static int allowed(const char *cmd, const char *opt)
+{
+    static const char *const table[][2] = {
+        {"--u", "eval"},        {"--v", "eval"},        {"--points", "eval"},
+        {"--derivs", "eval"},   {"--tol", "fit"},       {"--degree-v", "fit"},
+        {"--max-poles", "fit"}, {"--iges", "fit"},      {"-o", "fit mesh"},
+        {"--n", "mesh"},        {"--with-primaries", "mesh"}, {"--t", "eval info fit mesh"}};
+    for (size_t i = 0; i < sizeof table / sizeof *table; i++)
+        if (!strcmp(table[i][0], opt))
+            return strstr(table[i][1], cmd) != NULL;
+    return 0;
+}
 
 static int parse_args(int argc, char **argv, options *o)
 {
     memset(o, 0, sizeof *o);
     o->nu = o->nv = 11;
+    o->nmesh = 64;
+    o->tol = 1e-6;
+    o->degree_v = 5;
+    o->max_poles = 400;
     if (argc < 3)
         return usage_error("missing command or spec", NULL);
     o->command = argv[1];
@@ -89,6 +129,12 @@ static int parse_args(int argc, char **argv, options *o)
     for (int i = 3; i < argc; i++) {
         const char *a = argv[i];
         int has_val = i + 1 < argc;
+        if (!strncmp(a, "-", 1) && !allowed(o->command, a)) {
+            return usage_error(strstr("--u --v --points --derivs --tol --degree-v --max-poles --iges -o --n "
+                                      "--with-primaries --t", a) ? "option not valid for this command:"
+                                                                 : "unknown option",
+                               a);
+        }
         if (!strcmp(a, "--derivs")) {
             o->derivs = 1;
         } else if (!strcmp(a, "--u") || !strcmp(a, "--v")) {
@@ -96,22 +142,41 @@ static int parse_args(int argc, char **argv, options *o)
             if (!has_val || parse_count(argv[++i], dst))
                 return usage_error(a, "needs an integer >= 2");
             grid = 1;
+        } else if (!strcmp(a, "--n")) {
+            if (!has_val || parse_long(argv[++i], 2, &o->nmesh))
+                return usage_error("--n", "needs an integer >= 2");
+        } else if (!strcmp(a, "--degree-v")) {
+            if (!has_val || parse_long(argv[++i], 1, &o->degree_v) || (o->degree_v != 3 && o->degree_v != 5))
+                return usage_error("--degree-v", "must be 3 or 5");
+        } else if (!strcmp(a, "--max-poles")) {
+            if (!has_val || parse_long(argv[++i], 16, &o->max_poles))
+                return usage_error("--max-poles", "needs an integer >= 16");
         } else if (!strcmp(a, "--points")) {
             if (!has_val)
                 return usage_error("--points needs a file name ('-' for stdin)", NULL);
             o->points = argv[++i];
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--iges")) {
+            if (!has_val)
+                return usage_error(a, "needs a file name");
+            *(a[1] == 'o' ? &o->out : &o->iges) = argv[++i];
         } else if (!strcmp(a, "--t")) {
             if (!has_val || parse_double(argv[++i], &o->t))
                 return usage_error("--t needs a finite number", NULL);
             o->have_t = 1;
+        } else if (!strcmp(a, "--tol")) {
+            if (!has_val || parse_double(argv[++i], &o->tol) || !(o->tol > 0 && o->tol < 1))
+                return usage_error("--tol", "needs a number in (0, 1) (relative to the bounding-box diagonal)");
+        } else if (!strcmp(a, "--with-primaries")) {
+            if (!has_val || parse_double(argv[++i], &o->width) || !(o->width >= 0))
+                return usage_error("--with-primaries", "needs a width >= 0");
         } else {
-            return usage_error("unknown option", a);
+            return usage_error("unexpected argument", a);
         }
     }
     if (grid && o->points)
         return usage_error("give either --u/--v or --points, not both", NULL);
-    if (strcmp(o->command, "eval") && (grid || o->points || o->derivs))
-        return usage_error("--u, --v, --points and --derivs belong to 'eval'", NULL);
+    if ((!strcmp(o->command, "fit") || !strcmp(o->command, "mesh")) && !o->out)
+        return usage_error("missing -o OUTPUT", NULL);
     return 0;
 }
 
@@ -249,6 +314,76 @@ static int cmd_eval(const options *o, const c2b_blend *b, const c2b_problem *pb)
     return 0;
 }
 
+static int cmd_fit(const options *o, const c2b_blend *b)
+{
+    c2b_error err;
+    c2b_error_clear(&err);
+    c2b_fit_options fo = c2b_fit_options_default();
+    fo.tol_rel = o->tol;
+    fo.degree_v = (int)o->degree_v;
+    fo.max_poles = (int)o->max_poles;
+    c2b_nurbs_surface *s = NULL;
+    c2b_fit_report rep;
+    c2b_status st = c2b_fit_blend(b, &fo, &s, &rep, &err);
+    if (st)
+        return fail(&err);
+    static const char *const dn[C2B_MAX_N] = {"S", "S_u", "S_uu", "S_uuu"};
+    cJSON *root = cJSON_CreateObject(), *nj = c2b_nurbs_surface_to_json(s);
+    cJSON_AddItemToObject(root, "nurbs", nj);
+    cJSON_AddNumberToObject(root, "deviation", rep.deviation);
+    cJSON_AddNumberToObject(root, "tolerance", rep.tolerance);
+    cJSON_AddNumberToObject(root, "tolerance_rel", o->tol);
+    cJSON_AddNumberToObject(root, "bbox_diagonal", rep.bbox_diagonal);
+    cJSON *res = cJSON_AddObjectToObject(root, "residuals");
+    for (int side = 0; side < 2; side++) {
+        cJSON *r = cJSON_AddObjectToObject(res, side ? "u1" : "u0");
+        for (int k = 0; k < c2b_blend_constraints(b); k++)
+            cJSON_AddNumberToObject(r, dn[k], rep.residual[side][k]);
+    }
+    cJSON *np = cJSON_AddArrayToObject(root, "poles");
+    cJSON_AddItemToArray(np, cJSON_CreateNumber(rep.npoles[0]));
+    cJSON_AddItemToArray(np, cJSON_CreateNumber(rep.npoles[1]));
+    cJSON_AddNumberToObject(root, "check_points", (double)rep.check_points);
+    cJSON_AddNumberToObject(root, "time_ms", 1e3 * rep.seconds);
+    char *text = nj ? cJSON_Print(root) : NULL;
+    cJSON_Delete(root);
+    if (!text)
+        st = c2b_error_set(&err, C2B_ERR_NOMEM, "out of memory writing the fit");
+    c2b_atomic_file f;
+    if (!st)
+        st = c2b_atomic_open(&f, o->out, &err);
+    if (!st) {
+        fputs(text, f.fp);
+        fputc('\n', f.fp);
+        st = c2b_atomic_commit(&f, &err);
+    }
+    cJSON_free(text);
+    if (!st && o->iges)
+        st = c2b_iges_write_surface(s, o->iges, NULL, &err);
+    c2b_nurbs_surface_destroy(s);
+    if (st)
+        return fail(&err);
+    fprintf(stderr, "c2blend fit: deviation %.3g (tolerance %.3g), %d x %d poles, %.1f ms -> %s%s%s\n",
+            rep.deviation, rep.tolerance, rep.npoles[0], rep.npoles[1], 1e3 * rep.seconds, o->out,
+            o->iges ? ", " : "", o->iges ? o->iges : "");
+    return 0;
+}
+
+static int cmd_mesh(const options *o, const c2b_blend *b, c2b_spec *spec, double t)
+{
+    c2b_error err;
+    c2b_error_clear(&err);
+    c2b_mesh m;
+    c2b_status st = c2b_mesh_tessellate(b, spec, t, (int)o->nmesh, o->width, &m, &err);
+    if (!st)
+        st = c2b_mesh_write(&m, o->out, &err);
+    if (!st && m.degenerate)
+        fprintf(stderr, "c2blend mesh: %zu degenerate vertices (no normal or curvature; valid = 0)\n",
+                m.degenerate);
+    c2b_mesh_free(&m);
+    return st ? fail(&err) : 0;
+}
+
 static int cmd_info(const c2b_blend *b, const c2b_spec *spec)
 {
     c2b_error err;
@@ -277,7 +412,8 @@ int main(int argc, char **argv)
     int rc = parse_args(argc, argv, &o);
     if (rc)
         return rc;
-    if (strcmp(o.command, "eval") && strcmp(o.command, "info"))
+    if (strcmp(o.command, "eval") && strcmp(o.command, "info") && strcmp(o.command, "fit") &&
+        strcmp(o.command, "mesh"))
         return usage_error("unknown command", o.command);
     c2b_error err;
     c2b_error_clear(&err);
@@ -294,7 +430,14 @@ int main(int argc, char **argv)
         c2b_spec_destroy(spec);
         return fail(&err);
     }
-    rc = !strcmp(o.command, "eval") ? cmd_eval(&o, b, &pb) : cmd_info(b, spec);
+    if (!strcmp(o.command, "eval"))
+        rc = cmd_eval(&o, b, &pb);
+    else if (!strcmp(o.command, "fit"))
+        rc = cmd_fit(&o, b);
+    else if (!strcmp(o.command, "mesh"))
+        rc = cmd_mesh(&o, b, spec, pb.time);
+    else
+        rc = cmd_info(b, spec);
     c2b_blend_destroy(b);
     c2b_spec_destroy(spec);
     return rc;
