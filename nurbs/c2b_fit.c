@@ -8,8 +8,9 @@
 
 #include "c2b_bspline.h"
 
-/* The trimline curves are fitted to this fraction of the tolerance. */
-#define C2B_FIT_TRIM_FACTOR 0.01
+/* The end rows (S, S_u, ... at u = 0 and 1) are fitted along v to this fraction of
+ * the relative tolerance, each relative to its own magnitude along the trimline. */
+#define C2B_FIT_TRIM_FACTOR 1e-2
 
 c2b_fit_options c2b_fit_options_default(void)
 {
@@ -410,6 +411,55 @@ done:
     return st;
 }
 
+/* Relative v-approximation error of the end rows, pointwise: for k < n at u = 0, 1,
+ * |d^k S_fit/du^k - d^k S/du^k| divided by a local scale, per v-span into ev[] (and
+ * the maximum absolute residuals per side and order into res, when not NULL). The
+ * scale is diag for S (position), |S_u(v)| for S_u (so the ratio is the tangent
+ * angle error) and max(|d^k S/du^k (v)|, |S_u(v)|^k / diag^(k-1)) for k >= 2 (an S_uu
+ * error of that size changes the normal curvature by about 1/diag, so nearly flat
+ * rows are not chased into rounding noise). */
+static c2b_status trim_errors(const fit *f, const c2b_blend *b, int nv, const double *v,
+                              double diag, double *ev, double res[2][C2B_MAX_N], c2b_error *err)
+{
+    int n = f->n;
+    size_t nd = c2b_blend_deriv_count(n - 1);
+    double ue[2] = {0.0, 1.0};
+    double *an = malloc(2 * (size_t)nv * nd * 3 * sizeof *an);
+    double *fv = malloc((size_t)nv * 3 * sizeof *fv);
+    c2b_status st = C2B_OK;
+    if (!an || !fv)
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
+    else
+        st = c2b_blend_eval_grid(b, 2, ue, (size_t)nv, v, n - 1, an, err);
+    for (int side = 0; !st && side < 2; side++)
+        for (int k = 0; k < n; k++) {
+            if (fit_eval_grid(f, 1, &ue[side], k, nv, v, fv)) {
+                st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
+                break;
+            }
+            double r = 0;
+            for (int j = 0; j < nv; j++) {
+                const double *row = an + ((size_t)side * (size_t)nv + (size_t)j) * nd * 3;
+                const double *a = row + (size_t)UENTRY[k] * 3, *su = row + 3;
+                double dx = fv[j * 3] - a[0], dy = fv[j * 3 + 1] - a[1], dz = fv[j * 3 + 2] - a[2];
+                double d = sqrt(dx * dx + dy * dy + dz * dz);
+                double nsu = sqrt(su[0] * su[0] + su[1] * su[1] + su[2] * su[2]);
+                double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+                double scale = k == 0 ? diag : k == 1 ? nsu : fmax(na, pow(nsu, k) / pow(diag, k - 1));
+                r = fmax(r, d);
+                if (ev && scale > 0) {
+                    int sv = dir_bspan(&f->v, dir_wrap(&f->v, v[j]));
+                    ev[sv] = fmax(ev[sv], d / scale);
+                }
+            }
+            if (res)
+                res[side][k] = r;
+        }
+    free(an);
+    free(fv);
+    return st;
+}
+
 static double now(void)
 {
     struct timespec ts;
@@ -462,7 +512,7 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
         return c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
     }
     static const double F6[6] = {0.07, 0.23, 0.41, 0.59, 0.77, 0.93};
-    static const double F4[4] = {0.13, 0.37, 0.61, 0.86};
+    static const double F8[8] = {0.03, 0.16, 0.29, 0.44, 0.56, 0.71, 0.84, 0.97};
     double tol = 0, bbox[6];
     int done = 0;
     double *us = NULL, *vs = NULL, *eu = NULL, *ev = NULL;
@@ -508,9 +558,8 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
             tol = opt->tol_rel * rep->bbox_diagonal;
             rep->tolerance = tol;
         }
-        /* The trimline curves (the end pole rows) are held 100x tighter than the
-         * interior: that is the contact with the primaries. */
-        double ends[2] = {0.0, 1.0}, d3;
+        /* The end rows are the contact with the primaries: refine v until each is
+         * approximated to C2B_FIT_TRIM_FACTOR * tol_rel of its own magnitude. */
         double *evt = calloc((size_t)f.v.nb, sizeof *evt);
         unsigned char *su = calloc((size_t)f.u.nb, 1), *sv = calloc((size_t)f.v.nb, 1);
         if (!su || !sv || !evt) {
@@ -520,7 +569,7 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
             st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
             break;
         }
-        st = deviation(&f, b, 2, ends, nvs, vs, NULL, evt, &d3, NULL, err);
+        st = trim_errors(&f, b, nvs, vs, rep->bbox_diagonal, evt, NULL, err);
         if (st) {
             free(su);
             free(sv);
@@ -531,12 +580,12 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
         for (int k = 0; k < f.u.nb - 1; k++)
             nsplit += su[k] = eu[k] > 0.5 * tol;
         for (int k = 0; k < f.v.nb - 1; k++)
-            nsplit += sv[k] = ev[k] > 0.5 * tol || evt[k] > C2B_FIT_TRIM_FACTOR * tol;
+            nsplit += sv[k] = ev[k] > 0.5 * tol || evt[k] > C2B_FIT_TRIM_FACTOR * opt->tol_rel;
         free(evt);
         if (!nsplit) {
             /* Independent check grid, offset from every site and knot. */
             int ncu, ncv;
-            double *cu = span_samples(&f.u, 4, F4, 1, &ncu), *cv = span_samples(&f.v, 4, F4, 1, &ncv);
+            double *cu = span_samples(&f.u, 8, F8, 1, &ncu), *cv = span_samples(&f.v, 8, F8, 1, &ncv);
             double *ceu = calloc((size_t)f.u.nb, sizeof *ceu), *cev = calloc((size_t)f.v.nb, sizeof *cev);
             if (!cu || !cv || !ceu || !cev) {
                 st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
@@ -553,30 +602,12 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
                     for (int k = 0; k < f.v.nb - 1; k++)
                         sv[k] = cev[k] > 0.5 * tol;
                 }
-                /* Residuals of the end rows against the blend, on the check v's. */
-                if (!st && done) {
-                    size_t nd = c2b_blend_deriv_count(f.n - 1);
-                    double ue[2] = {0.0, 1.0};
-                    double *an = malloc(2 * (size_t)ncv * nd * 3 * sizeof *an);
-                    double *fv = malloc((size_t)ncv * 3 * sizeof *fv);
-                    if (!an || !fv)
-                        st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
-                    else
-                        st = c2b_blend_eval_grid(b, 2, ue, (size_t)ncv, cv, f.n - 1, an, err);
-                    for (int side = 0; !st && side < 2; side++)
-                        for (int k = 0; k < f.n; k++) {
-                            fit_eval_grid(&f, 1, &ue[side], k, ncv, cv, fv);
-                            double r = 0;
-                            for (int j = 0; j < ncv; j++)
-                                for (int c = 0; c < 3; c++)
-                                    r = fmax(r, fabs(fv[j * 3 + c] -
-                                                     an[(((size_t)side * (size_t)ncv + (size_t)j) * nd +
-                                                         (size_t)UENTRY[k]) * 3 + (size_t)c]));
-                            rep->residual[side][k] = r;
-                        }
-                    free(an);
-                    free(fv);
-                }
+                /* Residuals of the end rows against the blend: on the check v's, and at
+                 * the v-interpolation sites, where the Hermite end rows are exact. */
+                if (!st && done)
+                    st = trim_errors(&f, b, ncv, cv, rep->bbox_diagonal, NULL, rep->residual, err);
+                if (!st && done)
+                    st = trim_errors(&f, b, f.v.npoles, f.vsite, rep->bbox_diagonal, NULL, rep->site_residual, err);
             }
             free(cu);
             free(cv);

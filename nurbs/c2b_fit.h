@@ -10,8 +10,9 @@
  * middle of each span whose deviation exceeds half the tolerance, measured
  * separately along u (at the v-interpolation sites) and along v (at the u-sites),
  * until a dense check grid offset from every site and knot is within tolerance. The
- * trimline curves S(0, v) and S(1, v) are refined to 1% of the tolerance, so the
- * contact with the primaries is two orders tighter than the interior deviation.
+ * end rows S, S_u, ... at u = 0 and 1 are refined along v until each is within 1% of
+ * tol_rel of its own magnitude, so the contact with the primaries (position, tangent
+ * and curvature) is two orders tighter than the interior deviation.
  */
 #ifndef C2B_FIT_H
 #define C2B_FIT_H
@@ -35,10 +36,14 @@ c2b_fit_options c2b_fit_options_default(void);
 
 /** What a fit achieved. Filled on success and on C2B_ERR_NUMERIC (budget exceeded). */
 typedef struct c2b_fit_report {
-    double deviation;     /**< max |S_fit - S| over the final check grid, model units */
+    double deviation;     /**< max |S_fit - S| over the final check grid (8 points per span
+                               in each direction, offset from knots and sites, plus the
+                               ends): a sampled maximum, model units */
     double tolerance;     /**< tol_rel * bbox_diagonal */
     double bbox_diagonal; /**< of the analytic blend on the check grid */
     double residual[2][C2B_MAX_N]; /**< max |d^k S_fit/du^k - d^k S/du^k| at u = side, dense v */
+    double site_residual[2][C2B_MAX_N]; /**< the same at the v-interpolation sites, where the
+                                             end rows are exact up to rounding */
     int npoles[2];        /**< distinct poles in u and v */
     int iterations;
     long check_points;    /**< size of the final check grid */

@@ -406,6 +406,10 @@ static c2b_status nb_check_dir(int p, int n, const double *U, int periodic, cons
     if (!(b > a))
         return nb_fail(err, C2B_ERR_SPEC, path, kname, "the domain [%s, %s] has zero length",
                        nb_num(a, s0, sizeof s0), nb_num(b, s1, sizeof s1));
+    if (!isfinite(U[nk - 1] - U[0]))
+        return nb_fail(err, C2B_ERR_SPEC, path, kname, "the knot range [%s, %s] is too long "
+                       "(its length overflows)", nb_num(U[0], s0, sizeof s0),
+                       nb_num(U[nk - 1], s1, sizeof s1));
     for (int i = 0; i < nk;) {
         int j = i;
         while (j + 1 < nk && U[j + 1] == U[i])
@@ -746,7 +750,7 @@ static int nb_mult(const nb_dir *d, double t)
     return s;
 }
 
-/* ---- degree elevation (A5.9) on items of D doubles ----------------------------------- */
+/* ---- degree elevation on items of D doubles ------------------------------------------ */
 
 /* Make a non-periodic direction clamped (knots[0..p] = domain start, the last p + 1 =
  * domain end) by inserting the domain ends up to multiplicity p + 1 and dropping the
@@ -863,6 +867,11 @@ static c2b_status nb_elevate_one(nb_dir *d, double **Pp, size_t D)
         while (Us[e] > b)
             e--;
         int len = e - s + 1, mfin = len - (p + 2);
+        if (len > NB_LOCAL - 2) { /* cannot happen: multiplicities are at most p + 1 */
+            free(Us);
+            free(Q);
+            return C2B_ERR_NUMERIC;
+        }
         double w[NB_LOCAL] = {0};
         for (int j = i; j <= i + p + 1; j++) {
             /* tau = U[i..i+p+1] with U[j] doubled */
@@ -955,7 +964,7 @@ static c2b_status nb_check_elevate(const nb_dir *d, int times, const char *what,
     if (d->p + times > MAXP)
         return c2b_error_set(err, C2B_ERR_ARG, "degree elevation: degree %d + %d exceeds %d", d->p,
                              times, MAXP);
-    /* pole count after elevation: at most n + 2(p+1) (clamping) + times * (spans + 1) */
+    /* pole count after elevation: at most n (after clamping) + times * spans */
     long spans = 0;
     for (int i = d->p; i < d->nw; i++)
         if (d->U[i] < d->U[i + 1])

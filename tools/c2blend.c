@@ -345,7 +345,11 @@ static int cmd_fit(const options *o, const c2b_blend *b)
     cJSON_AddItemToArray(np, cJSON_CreateNumber(rep.npoles[1]));
     cJSON_AddNumberToObject(root, "check_points", (double)rep.check_points);
     cJSON_AddNumberToObject(root, "time_ms", 1e3 * rep.seconds);
-    char *text = nj ? cJSON_Print(root) : NULL;
+    /* Exact number printing: the poles and knots must read back bit for bit. */
+    size_t len = nj ? c2b_nurbs_json_print(root, 1, NULL, 0) : 0;
+    char *text = nj ? malloc(len + 1) : NULL;
+    if (text)
+        c2b_nurbs_json_print(root, 1, text, len + 1);
     cJSON_Delete(root);
     if (!text)
         st = c2b_error_set(&err, C2B_ERR_NOMEM, "out of memory writing the fit");
@@ -357,7 +361,7 @@ static int cmd_fit(const options *o, const c2b_blend *b)
         fputc('\n', f.fp);
         st = c2b_atomic_commit(&f, &err);
     }
-    cJSON_free(text);
+    free(text);
     if (!st && o->iges)
         st = c2b_iges_write_surface(s, o->iges, NULL, &err);
     c2b_nurbs_surface_destroy(s);

@@ -68,6 +68,28 @@ static const bad_case CASES[] = {
     {"{\"continuity\": \"C1\", \"shape\": [1, 0, -0.32117375828767714], \"periodic\": true, "
      "\"boundary\": {\"u0\": [[\"cos(2*pi*v)\", \"0\", \"0\"], [\"0\", \"0\", \"0\"]], \"u1\": [[\"0\", \"0\", \"0\"], [\"0\", \"0\", \"0\"]]}}",
      0, C2B_ERR_NUMERIC, "component x, mode cos(omega=6.28"},
+    /* NURBS primaries: each bad input names the field. */
+#define NURBS_PRIM(body, trim) \
+    "{\"primaries\": [{\"nurbs\": {" body "}, " trim "}," \
+    " {\"nurbs\": {\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1]," \
+    " \"poles\": [[[0,0,0,1],[1,0,0,1]],[[0,1,1,1],[1,1,1,1]]]}, \"trim_u\": 0}]}"
+#define GOOD_POLES "\"poles\": [[[0,0,0,1],[1,0,0,1]],[[0,1,1,1],[1,1,1,1]]]"
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 0.5], \"knots_v\": [0, 0, 1, 1], " GOOD_POLES, "\"trim_u\": 1"),
+     C2B_ERR_SPEC, 0, "primaries[0].nurbs.knots_u: decreasing at index 3"},
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1], \"poles\": [[[0,0,0,1],[1,0,0,1]],[[0,1,1,1]]]", "\"trim_u\": 1"),
+     C2B_ERR_SPEC, 0, "primaries[0].nurbs.poles[1]"},
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1], \"poles\": [[[0,0,0,1],[1,0,0,0]],[[0,1,1,1],[1,1,1,1]]]", "\"trim_u\": 1"),
+     C2B_ERR_SPEC, 0, "primaries[0].nurbs.poles[0][1]: weight must be positive"},
+    {NURBS_PRIM("\"degree\": [3, 1], \"knots_u\": [0, 0, 0, 0, 1, 1, 1, 1], \"knots_v\": [0, 0, 1, 1], " GOOD_POLES, "\"trim_u\": 1"),
+     C2B_ERR_SPEC, 0, "primaries[0].nurbs: degree 3 in u needs at least 4 poles, got 2"},
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1], " GOOD_POLES, "\"trim_u\": 1.5"),
+     C2B_ERR_SPEC, 0, "primaries[0].trim_u: 1.5 is outside the knot range [0, 1]"},
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1], " GOOD_POLES, "\"trim_u\": 1, \"trim_v\": 0"),
+     C2B_ERR_SPEC, 0, "primaries[0]: give exactly one of trim_u and trim_v"},
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1], \"weights\": [1], " GOOD_POLES, "\"trim_u\": 1"),
+     C2B_ERR_SPEC, 0, "primaries[0].nurbs: unknown key 'weights'"},
+    {NURBS_PRIM("\"degree\": [1, 1], \"knots_u\": [0, 0, 1], \"knots_v\": [0, 0, 1, 1], " GOOD_POLES, "\"trim_u\": 1"),
+     C2B_ERR_SPEC, 0, "primaries[0].nurbs.knots_u: 3 values given, 4 needed"},
     {"{\"force\": [\"exp(u)*cos(v)\", \"0\", \"0\"], \"periodic\": true, " GOOD_PRIM "}",
      0, C2B_ERR_SPEC, "force[0]: the force must be a polynomial in u"},
     {"{\"force\": [\"0\", \"0\"], " GOOD_PRIM "}", C2B_ERR_SPEC, 0, "force: expected 3 expressions"},

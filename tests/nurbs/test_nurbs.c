@@ -1070,6 +1070,9 @@ static void test_bad_input(void)
     double km[9] = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
     expect_err("interior multiplicity above p", c2b_nurbs_surface_create(3, 2, 7, 6, ok_u, km, P, NULL, &s, &err),
                &err, C2B_ERR_SPEC, "multiplicity 3, more than p (interior knot) = 2");
+    double kbig[9] = {-1e308, -1e308, -1e308, 0.5, 0.6, 0.7, 1e308, 1e308, 1e308};
+    expect_err("knot range overflowing", c2b_nurbs_surface_create(3, 2, 7, 6, ok_u, kbig, P, NULL, &s, &err),
+               &err, C2B_ERR_SPEC, "knots_v: the knot range [-1e+308, 1e+308] is too long");
     double kn[9] = {0, 0, 0, 0.5, NAN, 0.7, 1, 1, 1};
     expect_err("NaN knot", c2b_nurbs_surface_create(3, 2, 7, 6, ok_u, kn, P, NULL, &s, &err), &err,
                C2B_ERR_SPEC, "knots_v[4]: not finite");
