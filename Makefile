@@ -31,7 +31,7 @@ test-asan: deps
 	cd $(ASAN_BUILD) && ctest -j$(JOBS) --output-on-failure -LE bench
 
 bench: build
-	cd $(BUILD) && ctest -L bench --output-on-failure -V | grep -E '^[0-9]+: \|' | sed 's/^[0-9]*: //'
+	cd $(BUILD) && ctest -L bench --output-on-failure -V | grep -E '^[0-9]+: [|]' | sed 's/^[0-9]*: //'
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out

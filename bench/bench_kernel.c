@@ -17,6 +17,7 @@
 
 #include "c2b_blend.h"
 #include "c2b_constants.h"
+#include "c2b_fit.h"
 #include "c2b_mode.h"
 #include "c2b_spec.h"
 #include "cheb_bvp.h"
@@ -156,6 +157,19 @@ static void bench_grid(const char *spec_path)
            "%.0f frames/s |\n", 1e3 * ours, 1 / ours);
     printf("| peer: fresh blend at that time + evaluation | %.3f ms | ratio %.1fx |\n", 1e3 * peer,
            peer / ours);
+    /* B-spline fit at 1e-6 of the bounding-box diagonal, at the spec's time. */
+    c2b_blend_set_time(b, pb.time, NULL);
+    c2b_fit_options fo = c2b_fit_options_default();
+    c2b_fit_report rep;
+    for (int r = 0; r < 15; r++) {
+        c2b_nurbs_surface *fs = NULL;
+        double t0 = now();
+        c2b_fit_blend(b, &fo, &fs, &rep, NULL);
+        t[r] = now() - t0;
+        c2b_nurbs_surface_destroy(fs);
+    }
+    printf("| B-spline fit at tolerance 1e-6 (%d x %d poles, deviation %.2g) | %.2f ms | target <= 20 ms |\n",
+           rep.npoles[0], rep.npoles[1], rep.deviation / rep.bbox_diagonal, 1e3 * median(t, 15));
     free(u);
     free(v);
     free(out);
