@@ -138,7 +138,7 @@ static void check_fit(const char *name, const c2b_blend *b)
     check_le(what, wa, 1e-6);
     if (n >= 3) {
         snprintf(what, sizeof what, "%s: fitted cross curvature at the trimlines (x bbox diagonal)", name);
-        check_le(what, wk, 1e-4);
+        check_le(what, wk, 1e-6);
     }
 
     /* The fitted surface, written as JSON, is accepted as a primary. */
