@@ -5,6 +5,7 @@
  *   c2blend info SPEC [--t T]
  *   c2blend fit  SPEC [--t T] [--tol 1e-6] [--degree-v 3|5] [--max-poles N] -o OUT.json [--iges OUT.igs]
  *   c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}
+ *   c2blend check SPEC [--t T] [--samples N] [--table] [--tol-g0 R] [--tol-g1 RAD] [--tol-g2 R] [--tol-c R]
  *
  * Exit codes: 0 success, 2 bad usage or bad spec, 3 numerical failure (resonant or
  * ill-conditioned mode), 4 out of memory. Errors go to stderr; stdout receives
@@ -20,6 +21,7 @@
 
 #include "c2b_atomic.h"
 #include "c2b_blend.h"
+#include "c2b_check.h"
 #include "c2b_fit.h"
 #include "c2b_iges.h"
 #include "c2b_mesh.h"
@@ -35,6 +37,7 @@ static const char USAGE[] =
     "       c2blend info SPEC [--t T]\n"
     "       c2blend fit  SPEC [--t T] [--tol 1e-6] [--degree-v 3|5] [--max-poles N] -o OUT.json [--iges OUT.igs]\n"
     "       c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}\n"
+    "       c2blend check SPEC [--t T] [--samples N] [--table] [--tol-g0 R] [--tol-g1 RAD] [--tol-g2 R] [--tol-c R]\n"
     "SPEC is a JSON blend spec (see README.md), '-' for standard input.\n";
 
 static int exit_code(c2b_status st)
@@ -85,7 +88,8 @@ typedef struct options {
     const char *command, *spec, *points, *out, *iges;
     long nu, nv, nmesh, degree_v, max_poles;
     double t, tol, width;
-    int have_t, derivs;
+    int have_t, derivs, table;
+    c2b_check_options check;
 } options;
 
 static int parse_long(const char *s, long lo, long *out)
@@ -106,7 +110,9 @@ static int allowed(const char *cmd, const char *opt)
         {"--u", "eval"},        {"--v", "eval"},        {"--points", "eval"},
         {"--derivs", "eval"},   {"--tol", "fit"},       {"--degree-v", "fit"},
         {"--max-poles", "fit"}, {"--iges", "fit"},      {"-o", "fit mesh"},
-        {"--n", "mesh"},        {"--with-primaries", "mesh"}, {"--t", "eval info fit mesh"}};
+        {"--n", "mesh"},        {"--with-primaries", "mesh"}, {"--t", "eval info fit mesh check"},
+        {"--samples", "check"}, {"--table", "check"}, {"--tol-g0", "check"}, {"--tol-g1", "check"},
+        {"--tol-g2", "check"},  {"--tol-c", "check"}};
     for (size_t i = 0; i < sizeof table / sizeof *table; i++)
         if (!strcmp(table[i][0], opt))
             return strstr(table[i][1], cmd) != NULL;
@@ -121,6 +127,7 @@ static int parse_args(int argc, char **argv, options *o)
     o->tol = 1e-6;
     o->degree_v = 5;
     o->max_poles = 400;
+    o->check = c2b_check_options_default();
     if (argc < 3)
         return usage_error("missing command or spec", NULL);
     o->command = argv[1];
@@ -131,12 +138,25 @@ static int parse_args(int argc, char **argv, options *o)
         int has_val = i + 1 < argc;
         if (!strncmp(a, "-", 1) && !allowed(o->command, a)) {
             return usage_error(strstr("--u --v --points --derivs --tol --degree-v --max-poles --iges -o --n "
-                                      "--with-primaries --t", a) ? "option not valid for this command:"
-                                                                 : "unknown option",
+                                      "--with-primaries --t --samples --table --tol-g0 --tol-g1 --tol-g2 "
+                                      "--tol-c", a) ? "option not valid for this command:"
+                                                    : "unknown option",
                                a);
         }
         if (!strcmp(a, "--derivs")) {
             o->derivs = 1;
+        } else if (!strcmp(a, "--table")) {
+            o->table = 1;
+        } else if (!strcmp(a, "--samples")) {
+            long ns;
+            if (!has_val || parse_long(argv[++i], 2, &ns) || ns > 1000000)
+                return usage_error("--samples", "needs an integer in 2..1000000");
+            o->check.samples = (int)ns;
+        } else if (!strncmp(a, "--tol-", 6)) {
+            double *dst = !strcmp(a, "--tol-g0") ? &o->check.g0_rel : !strcmp(a, "--tol-g1") ? &o->check.g1_rad
+                          : !strcmp(a, "--tol-g2") ? &o->check.g2_rel : &o->check.c_rel;
+            if (!has_val || parse_double(argv[++i], dst) || !(*dst > 0))
+                return usage_error(a, "needs a positive number");
         } else if (!strcmp(a, "--u") || !strcmp(a, "--v")) {
             long *dst = a[2] == 'u' ? &o->nu : &o->nv;
             if (!has_val || parse_count(argv[++i], dst))
@@ -388,6 +408,66 @@ static int cmd_mesh(const options *o, const c2b_blend *b, c2b_spec *spec, double
     return st ? fail(&err) : 0;
 }
 
+static void add_max(cJSON *o, const char *name, const char *at, const c2b_check_max *m)
+{
+    cJSON_AddNumberToObject(o, name, m->max);
+    cJSON_AddNumberToObject(o, at, m->at_v);
+}
+
+static int cmd_check(const options *o, const c2b_blend *b, c2b_spec *spec)
+{
+    c2b_error err;
+    c2b_error_clear(&err);
+    c2b_check_side r[2];
+    c2b_status st = c2b_check_run(b, spec, &o->check, r, &err);
+    if (st)
+        return fail(&err);
+    cJSON *root = cJSON_CreateObject();
+    cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
+    cJSON_AddNumberToObject(tol, "g0_rel_to_diagonal", o->check.g0_rel);
+    cJSON_AddNumberToObject(tol, "g1_rad", o->check.g1_rad);
+    cJSON_AddNumberToObject(tol, "g2_rel", o->check.g2_rel);
+    cJSON_AddNumberToObject(tol, "c_rel", o->check.c_rel);
+    cJSON_AddNumberToObject(root, "time", c2b_blend_time(b));
+    cJSON *tl = cJSON_AddArrayToObject(root, "trimlines");
+    for (int side = 0; side < 2; side++) {
+        const c2b_check_side *s = &r[side];
+        cJSON *j = cJSON_CreateObject();
+        cJSON_AddNumberToObject(j, "side", side);
+        cJSON_AddNumberToObject(j, "samples", s->samples);
+        add_max(j, "g0_max", "g0_at_v", &s->g0);
+        add_max(j, "g1_max_rad", "g1_at_v", &s->g1);
+        add_max(j, "g2_max", "g2_at_v", &s->g2);
+        add_max(j, "g2_max_rel", "g2_rel_at_v", &s->g2_rel);
+        add_max(j, "dk1_max", "dk1_at_v", &s->dk1);
+        add_max(j, "dk2_max", "dk2_at_v", &s->dk2);
+        add_max(j, "dK_max", "dK_at_v", &s->dK);
+        add_max(j, "dH_max", "dH_at_v", &s->dH);
+        add_max(j, "c1_max", "c1_at_v", &s->c1);
+        add_max(j, "c2_max", "c2_at_v", &s->c2);
+        cJSON_AddNumberToObject(j, "length_scale", s->scale_length);
+        cJSON_AddNumberToObject(j, "degenerate_points", s->degenerate);
+        cJSON_AddStringToObject(j, "verdict", s->verdict);
+        cJSON_AddStringToObject(j, "parametric_verdict", s->parametric_verdict);
+        if (o->table) {
+            cJSON *t = cJSON_AddObjectToObject(j, "table");
+            cJSON *tb = cJSON_AddArrayToObject(t, "blend"), *tp = cJSON_AddArrayToObject(t, "primary");
+            for (int k = 0; k < 2; k++) {
+                cJSON_AddItemToArray(tb, cJSON_CreateNumber(s->table_blend[k]));
+                cJSON_AddItemToArray(tp, cJSON_CreateNumber(s->table_primary[k]));
+            }
+        }
+        cJSON_AddItemToArray(tl, j);
+    }
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (!text)
+        return EXIT_NOMEM;
+    puts(text);
+    cJSON_free(text);
+    return 0;
+}
+
 static int cmd_info(const c2b_blend *b, const c2b_spec *spec)
 {
     c2b_error err;
@@ -417,7 +497,7 @@ int main(int argc, char **argv)
     if (rc)
         return rc;
     if (strcmp(o.command, "eval") && strcmp(o.command, "info") && strcmp(o.command, "fit") &&
-        strcmp(o.command, "mesh"))
+        strcmp(o.command, "mesh") && strcmp(o.command, "check"))
         return usage_error("unknown command", o.command);
     c2b_error err;
     c2b_error_clear(&err);
@@ -440,6 +520,8 @@ int main(int argc, char **argv)
         rc = cmd_fit(&o, b);
     else if (!strcmp(o.command, "mesh"))
         rc = cmd_mesh(&o, b, spec, pb.time);
+    else if (!strcmp(o.command, "check"))
+        rc = cmd_check(&o, b, spec);
     else
         rc = cmd_info(b, spec);
     c2b_blend_destroy(b);

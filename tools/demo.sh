@@ -26,8 +26,20 @@ for r in d["boundary_residuals"]:
 t = d["time_ms"]
 print("  time: projection %.3f ms, modes %.3f ms, solve %.3f ms" % (t["projection"], t["modes"], t["solve"]))
 PY
+"$C2B" check "$SPEC" --table > out/demo_check.json.tmp && mv out/demo_check.json.tmp out/demo_check.json
+"$PY" - out/demo_check.json <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+print("  continuity report (c2blend check, %d matched points per trimline):" % d["trimlines"][0]["samples"])
+for t in d["trimlines"]:
+    tb = t["table"]
+    print("    u=%d: %s / %s   G0 %.1e  G1 %.1e rad  G2 %.1e (relative)   "
+          "curvature along/across: blend (%.4g, %.4g), primary (%.4g, %.4g)"
+          % (t["side"], t["verdict"], t["parametric_verdict"], t["g0_max"], t["g1_max_rad"],
+             t["g2_max_rel"], tb["blend"][0], tb["blend"][1], tb["primary"][0], tb["primary"][1]))
+PY
 "$C2B" eval "$SPEC" --u 41 --v 65 > out/demo.csv.tmp && mv out/demo.csv.tmp out/demo.csv
-echo "  wrote out/demo.csv (41 x 65 grid, u then v) and out/demo_info.json"
+echo "  wrote out/demo.csv (41 x 65 grid, u then v), out/demo_info.json and out/demo_check.json"
 if "$PY" tools/plot_blend.py "$SPEC" -o out/demo.png --c2blend "$C2B" > /dev/null; then
   echo "  wrote out/demo.png"
 fi
