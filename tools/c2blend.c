@@ -6,6 +6,7 @@
  *   c2blend fit  SPEC [--t T] [--tol 1e-6] [--degree-v 3|5] [--max-poles N] -o OUT.json [--iges OUT.igs]
  *   c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}
  *   c2blend check SPEC [--t T] [--samples N] [--table] [--tol-g0 R] [--tol-g1 RAD] [--tol-g2 R] [--tol-c R]
+ *   c2blend profile SPEC [--t T] [--n 201] [--with-primaries WIDTH] [--at V1,V2,...]
  *
  * Exit codes: 0 success, 2 bad usage or bad spec, 3 numerical failure (resonant or
  * ill-conditioned mode), 4 out of memory. Errors go to stderr; stdout receives
@@ -22,6 +23,7 @@
 #include "c2b_atomic.h"
 #include "c2b_blend.h"
 #include "c2b_check.h"
+#include "c2b_curv.h"
 #include "c2b_fit.h"
 #include "c2b_iges.h"
 #include "c2b_mesh.h"
@@ -38,6 +40,7 @@ static const char USAGE[] =
     "       c2blend fit  SPEC [--t T] [--tol 1e-6] [--degree-v 3|5] [--max-poles N] -o OUT.json [--iges OUT.igs]\n"
     "       c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}\n"
     "       c2blend check SPEC [--t T] [--samples N] [--table] [--tol-g0 R] [--tol-g1 RAD] [--tol-g2 R] [--tol-c R]\n"
+    "       c2blend profile SPEC [--t T] [--n 201] [--with-primaries WIDTH] [--at V1,V2,...]\n"
     "SPEC is a JSON blend spec (see README.md), '-' for standard input.\n";
 
 static int exit_code(c2b_status st)
@@ -85,7 +88,7 @@ static int parse_count(const char *s, long *out)
 }
 
 typedef struct options {
-    const char *command, *spec, *points, *out, *iges;
+    const char *command, *spec, *points, *out, *iges, *at;
     long nu, nv, nmesh, degree_v, max_poles;
     double t, tol, width;
     int have_t, derivs, table;
@@ -110,7 +113,8 @@ static int allowed(const char *cmd, const char *opt)
         {"--u", "eval"},        {"--v", "eval"},        {"--points", "eval"},
         {"--derivs", "eval"},   {"--tol", "fit"},       {"--degree-v", "fit"},
         {"--max-poles", "fit"}, {"--iges", "fit"},      {"-o", "fit mesh"},
-        {"--n", "mesh"},        {"--with-primaries", "mesh"}, {"--t", "eval info fit mesh check"},
+        {"--n", "mesh profile"}, {"--with-primaries", "mesh profile"}, {"--at", "profile"},
+        {"--t", "eval info fit mesh check profile"},
         {"--samples", "check"}, {"--table", "check"}, {"--tol-g0", "check"}, {"--tol-g1", "check"},
         {"--tol-g2", "check"},  {"--tol-c", "check"}};
     for (size_t i = 0; i < sizeof table / sizeof *table; i++)
@@ -139,12 +143,16 @@ static int parse_args(int argc, char **argv, options *o)
         if (!strncmp(a, "-", 1) && !allowed(o->command, a)) {
             return usage_error(strstr("--u --v --points --derivs --tol --degree-v --max-poles --iges -o --n "
                                       "--with-primaries --t --samples --table --tol-g0 --tol-g1 --tol-g2 "
-                                      "--tol-c", a) ? "option not valid for this command:"
+                                      "--tol-c --at", a) ? "option not valid for this command:"
                                                     : "unknown option",
                                a);
         }
         if (!strcmp(a, "--derivs")) {
             o->derivs = 1;
+        } else if (!strcmp(a, "--at")) {
+            if (!has_val)
+                return usage_error("--at", "needs comma-separated v values");
+            o->at = argv[++i];
         } else if (!strcmp(a, "--table")) {
             o->table = 1;
         } else if (!strcmp(a, "--samples")) {
@@ -468,6 +476,73 @@ static int cmd_check(const options *o, const c2b_blend *b, c2b_spec *spec)
     return 0;
 }
 
+/* Curvature profiles across the trimlines: along u at fixed v, through the primary
+ * strips (extended coordinates), as CSV. */
+static int cmd_profile(const options *o, const c2b_blend *b, c2b_spec *spec)
+{
+    c2b_error err;
+    c2b_error_clear(&err);
+    c2b_vdomain dom = c2b_blend_domain(b);
+    double vs[64];
+    int nvs = 0;
+    if (o->at) {
+        const char *p = o->at;
+        while (*p && nvs < 64) {
+            char *end;
+            double v = strtod(p, &end);
+            if (end == p || !isfinite(v))
+                return usage_error("--at", "needs comma-separated finite numbers");
+            vs[nvs++] = v;
+            p = *end == ',' ? end + 1 : end;
+            if (*end && *end != ',')
+                return usage_error("--at", "needs comma-separated finite numbers");
+        }
+    } else {
+        for (int k = 0; k < 4; k++)
+            vs[nvs++] = dom.v0 + (dom.v1 - dom.v0) * k / 4.0;
+    }
+    int n = (int)(o->nmesh == 64 ? 201 : o->nmesh);
+    double width = c2b_spec_has_primaries(spec) ? o->width : 0.0;
+    int strip = width > 0 ? (int)ceil(width * (n - 1) - 1e-9) : 0;
+    size_t rows = (size_t)nvs * (size_t)(n + 2 * strip);
+    double *buf = malloc(rows * 7 * sizeof *buf);
+    if (!buf)
+        return EXIT_NOMEM;
+    size_t k = 0;
+    c2b_status st = C2B_OK;
+    for (int j = 0; j < nvs && !st; j++)
+        for (int r = -strip; r < n + strip && !st; r++) {
+            double u = (double)r / (n - 1), v = vs[j], d[30];
+            int region = r < 0 ? 1 : r >= n ? 2 : 0;
+            if (region)
+                st = c2b_spec_primary_eval(spec, region - 1, u, v, c2b_blend_time(b), 2, d, &err);
+            else
+                st = c2b_blend_eval(b, 1, &u, &v, 2, d, &err);
+            c2b_curv_point cp;
+            double *row = buf + 7 * k++;
+            row[0] = v, row[1] = u, row[2] = region;
+            if (!st && c2b_curv_eval(d, 0, &cp, NULL) == C2B_OK) {
+                row[3] = cp.k1, row[4] = cp.k2;
+                row[5] = c2b_curv_normal_curvature(&cp, 0, 1);
+                row[6] = c2b_curv_normal_curvature(&cp, 1, 0);
+            } else {
+                row[3] = row[4] = row[5] = row[6] = NAN;
+            }
+        }
+    if (st) {
+        free(buf);
+        return fail(&err);
+    }
+    puts("v,u,region,k1,k2,k_along,k_across");
+    for (size_t i = 0; i < k; i++) {
+        const double *row = buf + 7 * i;
+        printf("%.17g,%.17g,%d,%.17g,%.17g,%.17g,%.17g\n", row[0], row[1], (int)row[2], row[3], row[4],
+               row[5], row[6]);
+    }
+    free(buf);
+    return 0;
+}
+
 static int cmd_info(const c2b_blend *b, const c2b_spec *spec)
 {
     c2b_error err;
@@ -497,7 +572,7 @@ int main(int argc, char **argv)
     if (rc)
         return rc;
     if (strcmp(o.command, "eval") && strcmp(o.command, "info") && strcmp(o.command, "fit") &&
-        strcmp(o.command, "mesh") && strcmp(o.command, "check"))
+        strcmp(o.command, "mesh") && strcmp(o.command, "check") && strcmp(o.command, "profile"))
         return usage_error("unknown command", o.command);
     c2b_error err;
     c2b_error_clear(&err);
@@ -522,6 +597,8 @@ int main(int argc, char **argv)
         rc = cmd_mesh(&o, b, spec, pb.time);
     else if (!strcmp(o.command, "check"))
         rc = cmd_check(&o, b, spec);
+    else if (!strcmp(o.command, "profile"))
+        rc = cmd_profile(&o, b, spec);
     else
         rc = cmd_info(b, spec);
     c2b_blend_destroy(b);
