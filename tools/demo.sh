@@ -40,6 +40,6 @@ for t in d["trimlines"]:
 PY
 "$C2B" eval "$SPEC" --u 41 --v 65 > out/demo.csv.tmp && mv out/demo.csv.tmp out/demo.csv
 echo "  wrote out/demo.csv (41 x 65 grid, u then v), out/demo_info.json and out/demo_check.json"
-if "$PY" tools/plot_blend.py "$SPEC" -o out/demo.png --c2blend "$C2B" > /dev/null; then
+if "$PY" tools/plot_mesh.py "$SPEC" -o out/demo.png --c2blend "$C2B" --width 0.15 > /dev/null 2>&1; then
   echo "  wrote out/demo.png"
 fi
