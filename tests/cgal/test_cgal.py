@@ -122,7 +122,7 @@ def group_accuracy(tool):
     s, rows = tool.run(ply, "--degree", "2", "--rings", "1")
     e, _, _ = interior_max(s)
     check(e < 1e-3, "sphere degree 2, 1-ring: interior max error %.2e < 1e-3" % e)
-    for deg, rings, tol in (("3", "2", 1e-3), ("6", "3", 1e-5)):
+    for deg, rings, tol in (("3", "2", 5e-3), ("6", "3", 1e-5)):
         s, rows = tool.run(ply, "--degree", deg, "--rings", rings)
         e, _, _ = interior_max(s)
         check(e < tol, "sphere degree %s, %s-ring: interior max error %.2e < %g" % (deg, rings, e, tol))

@@ -22,10 +22,15 @@
 // the mesh, which is centrally symmetric on a regular grid whatever its aspect ratio; --k K
 // takes the query vertex and its K nearest other vertices (a kd-tree,
 // CGAL::Orthogonal_k_neighbor_search), which degenerates on strongly anisotropic grids
-// (the K points fall on a few grid lines). The query point is always first in the range given to the fitter (it is the
-// origin of CGAL's fitting frame). A vertex is "interior" when no point of its neighbourhood
-// lies on the mesh border: estimators are biased at borders, so the summary reports
-// statistics over all vertices and over interior vertices.
+// (the K points fall on a few grid lines). The query point is always first in the range
+// given to the fitter (it is the origin of CGAL's fitting frame).
+//
+// Statistics: the summary reports, per region (0 blend, 1 primary 1, 2 primary 2), the
+// max, mean and rms absolute errors over three vertex classes: all; interior, where no
+// neighbourhood point lies on the mesh border (estimators are biased there); smooth,
+// interior and the whole neighbourhood in the vertex's own region (a C2 blend is only C2
+// across a trimline, which limits a jet fit straddling it to O(h)). Vertices whose PLY
+// valid flag is 0 are excluded.
 //
 // Exit status: 0 on success, EXIT_FAILURE with one message on stderr (naming the file and
 // the line or element) on bad arguments or bad input; nothing is written to stdout then.
@@ -40,7 +45,7 @@
 #include <CGAL/version.h>
 
 #include <algorithm>
-#include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -50,8 +55,6 @@
 #include <fstream>
 #include <functional>
 #include <map>
-#include <numeric>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -162,16 +165,16 @@ std::vector<std::string> tokens(const std::string &line, bool hash_comments)
   return out;
 }
 
-// Parses a whole token as a double ("nan" and "inf" are accepted here and rejected by the
-// finiteness checks, so the message says what is wrong with the value).
+// Parses a whole token as a double. "nan", "inf" and overflow (which gives inf) are
+// accepted here and rejected by the finiteness checks, so the message says what is wrong
+// with the value; underflow to a subnormal or zero is accepted.
 bool parse_double(const std::string &s, double &x)
 {
   if (s.empty())
     return false;
   char *end = nullptr;
-  errno = 0;
   x = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size() && errno != ERANGE;
+  return end == s.c_str() + s.size();
 }
 
 // Parses a whole token as a (possibly negative) integer.
