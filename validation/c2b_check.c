@@ -1,4 +1,5 @@
 #include "c2b_check.h"
+#include "c2b_vec3.h"
 
 #include <math.h>
 #include <string.h>
@@ -16,13 +17,7 @@ c2b_check_options c2b_check_options_default(void)
     return o;
 }
 
-static double norm3(const double *a) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
-static double dist3(const double *a, const double *b)
-{
-    double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    return norm3(d);
-}
 
 static void upd(c2b_check_max *m, double value, double v)
 {
@@ -86,8 +81,8 @@ c2b_status c2b_check_run(const c2b_blend *b, c2b_spec *spec, const c2b_check_opt
             c2b_status st = c2b_spec_primary_eval(spec, side, u, v, t, 2, pts_dp, err);
             if (st)
                 return st;
-            su_max = fmax(su_max, norm3(pts_dp + 3));
-            suu_scale = fmax(suu_scale, norm3(pts_dp + 9));
+            su_max = fmax(su_max, c2b_vec3_norm(pts_dp + 3));
+            suu_scale = fmax(suu_scale, c2b_vec3_norm(pts_dp + 9));
         }
         suu_scale = fmax(suu_scale, su_max * su_max / diag);
         for (int i = 0; i < ns; i++) {
@@ -96,9 +91,9 @@ c2b_status c2b_check_run(const c2b_blend *b, c2b_spec *spec, const c2b_check_opt
             c2b_status st = c2b_spec_primary_eval(spec, side, u, v, t, 2, pts_dp, err);
             if (st)
                 return st;
-            upd(&r->g0, dist3(pts_db, pts_dp), v);
-            upd(&r->c1, dist3(pts_db + 3, pts_dp + 3), v);
-            upd(&r->c2, dist3(pts_db + 9, pts_dp + 9), v);
+            upd(&r->g0, c2b_vec3_dist(pts_db, pts_dp), v);
+            upd(&r->c1, c2b_vec3_dist(pts_db + 3, pts_dp + 3), v);
+            upd(&r->c2, c2b_vec3_dist(pts_db + 9, pts_dp + 9), v);
             c2b_curv_point cb, cp;
             if (c2b_curv_eval(pts_db, 0, &cb, NULL) || c2b_curv_eval(pts_dp, 0, &cp, NULL)) {
                 r->degenerate++;
@@ -109,7 +104,7 @@ c2b_status c2b_check_run(const c2b_blend *b, c2b_spec *spec, const c2b_check_opt
                             cb.normal[0] * cp.normal[1] - cb.normal[1] * cp.normal[0]};
             double dot = cb.normal[0] * cp.normal[0] + cb.normal[1] * cp.normal[1] +
                          cb.normal[2] * cp.normal[2];
-            upd(&r->g1, atan2(norm3(cr), dot), v);
+            upd(&r->g1, atan2(c2b_vec3_norm(cr), dot), v);
             /* Normal curvature across the trimline: the blend's S_u direction in 3-D. */
             double kb = 0, kp = 0;
             if (c2b_curv_normal_curvature_3d(pts_db, &cb, pts_db + 3, &kb, NULL) == C2B_OK &&

@@ -3,6 +3,7 @@
  * the sign conventions and the method.
  */
 #include "c2b_curv.h"
+#include "c2b_vec3.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -10,17 +11,7 @@
 static const char *const ENTRY_NAME[6] = {"S", "Su", "Sv", "Suu", "Suv", "Svv"};
 static const char XYZ[3] = {'x', 'y', 'z'};
 
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
-static void cross3(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* Index of the first non-finite entry of v[0..n-1], or -1. */
 static int first_nonfinite(const double *v, int n)
@@ -77,10 +68,10 @@ static c2b_status eval_point(const double *d, double tol, c2b_curv_point *out, c
         svv[k] = ldexp(d[15 + k], -e);
     }
 
-    double E = dot3(su, su), F = dot3(su, sv), G = dot3(sv, sv);
+    double E = c2b_vec3_dot(su, su), F = c2b_vec3_dot(su, sv), G = c2b_vec3_dot(sv, sv);
     double c[3];
-    cross3(su, sv, c);
-    double det = dot3(c, c); /* = EG - F^2 (Lagrange), without cancellation */
+    c2b_vec3_cross(su, sv, c);
+    double det = c2b_vec3_dot(c, c); /* = EG - F^2 (Lagrange), without cancellation */
     double det_unscaled = ldexp(det, 4 * e);
     if (E == 0)
         return c2b_error_set(err, C2B_ERR_NUMERIC, "degenerate point: Su vanishes (E = %g)",
@@ -106,7 +97,7 @@ static c2b_status eval_point(const double *d, double tol, c2b_curv_point *out, c
     double sq = sqrt(det);
     for (int k = 0; k < 3; k++)
         r.normal[k] = c[k] / sq;
-    double L = dot3(suu, r.normal), M = dot3(suv, r.normal), N = dot3(svv, r.normal);
+    double L = c2b_vec3_dot(suu, r.normal), M = c2b_vec3_dot(suv, r.normal), N = c2b_vec3_dot(svv, r.normal);
     double K = (L * N - M * M) / det;
     double H = (E * N - 2 * F * M + G * L) / (2 * det);
 
@@ -117,7 +108,7 @@ static c2b_status eval_point(const double *d, double tol, c2b_curv_point *out, c
     double e1[3], e2[3];
     for (int k = 0; k < 3; k++)
         e1[k] = su[k] / sE;
-    cross3(r.normal, e1, e2);
+    c2b_vec3_cross(r.normal, e1, e2);
     double r11 = 1 / sE, r12 = -F / (sE * sq), r22 = sE / sq;
     double s11 = L * r11 * r11;
     double s12 = r11 * (L * r12 + M * r22);
@@ -141,7 +132,7 @@ static c2b_status eval_point(const double *d, double tol, c2b_curv_point *out, c
     y /= len;
     for (int k = 0; k < 3; k++)
         r.dir1[k] = x * e1[k] + y * e2[k];
-    cross3(r.normal, r.dir1, r.dir2);
+    c2b_vec3_cross(r.normal, r.dir1, r.dir2);
 
     r.E = ldexp(E, 2 * e);
     r.F = ldexp(F, 2 * e);
@@ -210,11 +201,11 @@ c2b_status c2b_curv_normal_curvature_3d(const double *d, const c2b_curv_point *p
     if (s == 0)
         return c2b_error_set(err, C2B_ERR_ARG, "direction t is the zero vector");
     double u[3] = {t[0] / s, t[1] / s, t[2] / s};
-    double tn = dot3(u, p->normal);
+    double tn = c2b_vec3_dot(u, p->normal);
     double tt[3];
     for (int k = 0; k < 3; k++)
         tt[k] = u[k] - tn * p->normal[k];
-    double tlen = sqrt(dot3(tt, tt)), ulen = sqrt(dot3(u, u));
+    double tlen = sqrt(c2b_vec3_dot(tt, tt)), ulen = sqrt(c2b_vec3_dot(u, u));
     if (!(tlen > C2B_CURV_TANGENT_REL * ulen))
         return c2b_error_set(err, C2B_ERR_NUMERIC,
                              "direction t is (nearly) normal to the surface: tangential part %.3g of "
@@ -235,19 +226,19 @@ c2b_status c2b_curv_normal_curvature_3d(const double *d, const c2b_curv_point *p
         Su[k] = ldexp(d[3 + k], -e);
         Sv[k] = ldexp(d[6 + k], -e);
     }
-    double nSu = sqrt(dot3(Su, Su));
+    double nSu = sqrt(c2b_vec3_dot(Su, Su));
     if (!(nSu > 0))
         return c2b_error_set(err, C2B_ERR_NUMERIC, "degenerate point: Su vanishes");
     double e1[3], e2[3];
     for (int k = 0; k < 3; k++)
         e1[k] = Su[k] / nSu;
-    cross3(p->normal, e1, e2);
-    double v2 = dot3(Sv, e2);
+    c2b_vec3_cross(p->normal, e1, e2);
+    double v2 = c2b_vec3_dot(Sv, e2);
     if (!(fabs(v2) > 0))
         return c2b_error_set(err, C2B_ERR_NUMERIC,
                              "degenerate point: Su and Sv do not span the tangent plane of p");
-    double b = dot3(tt, e2) / v2;
-    double a = (dot3(tt, e1) - b * dot3(Sv, e1)) / nSu;
+    double b = c2b_vec3_dot(tt, e2) / v2;
+    double a = (c2b_vec3_dot(tt, e1) - b * c2b_vec3_dot(Sv, e1)) / nSu;
     double k = c2b_curv_normal_curvature(p, a, b);
     if (!isfinite(k))
         return c2b_error_set(err, C2B_ERR_NUMERIC, "non-finite normal curvature %g", k);

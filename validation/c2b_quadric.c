@@ -4,6 +4,7 @@
  * conventions.
  */
 #include "c2b_quadric.h"
+#include "c2b_vec3.h"
 
 #include <float.h>
 #include <lapacke.h>
@@ -20,17 +21,7 @@ enum { MONO_XX, MONO_YY, MONO_ZZ, MONO_XY, MONO_YZ, MONO_ZX, MONO_X, MONO_Y, MON
 
 /* ---- small vector helpers ------------------------------------------------------- */
 
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
-static void cross3(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* y = M x for a symmetric 3x3 matrix stored row-major. */
 static void matvec3(const double M[9], const double *x, double *y)
@@ -43,7 +34,7 @@ static double quad_form(const double M[9], const double *x, const double *y)
 {
     double t[3];
     matvec3(M, y, t);
-    return dot3(x, t);
+    return c2b_vec3_dot(x, t);
 }
 
 static void monomials(const double *x, double m[NMONO])
@@ -172,7 +163,7 @@ static c2b_status validate_mesh(const c2b_quadric_mesh *m, size_t *ndeg, c2b_err
             double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
             double e2[3] = {q[0] - a[0], q[1] - a[1], q[2] - a[2]};
             double nrm[3];
-            cross3(e1, e2, nrm);
+            c2b_vec3_cross(e1, e2, nrm);
             degenerate = nrm[0] == 0 && nrm[1] == 0 && nrm[2] == 0;
         }
         nd += (size_t)degenerate;
@@ -476,7 +467,7 @@ static void curvature_from_coef(const double c[NMONO], double n[3], double *K, d
     A[2] = A[6] = M[1] * M[5] - M[2] * M[4];
     A[5] = A[7] = M[1] * M[2] - M[0] * M[5];
 
-    double D2 = dot3(G, G), D = sqrt(D2);
+    double D2 = c2b_vec3_dot(G, G), D = sqrt(D2);
     *K = quad_form(A, G, G) / (D2 * D2);                                  /* eq. 44 */
     *H = (quad_form(M, G, G) - D2 * (M[0] + M[4] + M[8])) / (2 * D2 * D); /* eq. 45 */
     for (int k = 0; k < 3; k++)
@@ -489,11 +480,11 @@ static void curvature_from_coef(const double c[NMONO], double n[3], double *K, d
             j = k;
     double e[3] = {0, 0, 0}, t1[3], t2[3];
     e[j] = 1;
-    cross3(n, e, t1);
-    double l = sqrt(dot3(t1, t1));
+    c2b_vec3_cross(n, e, t1);
+    double l = sqrt(c2b_vec3_dot(t1, t1));
     for (int k = 0; k < 3; k++)
         t1[k] /= l;
-    cross3(n, t1, t2);
+    c2b_vec3_cross(n, t1, t2);
     /* Shape operator s_ab = -t_a^T M t_b / D; H^2 - K = ((s11 - s22)/2)^2 + s12^2. */
     double s11 = -quad_form(M, t1, t1) / D, s22 = -quad_form(M, t2, t2) / D;
     double s12 = -quad_form(M, t1, t2) / D;
@@ -618,7 +609,7 @@ static c2b_status fit_core(const double *p, size_t n, const double *q, const dou
     double Ks, Hs, k1s, k2s;
     curvature_from_coef(res.coef, res.normal, &Ks, &Hs, &k1s, &k2s);
     const double *g = res.coef + MONO_X;
-    if (hint && dot3(g, hint) < 0) {
+    if (hint && c2b_vec3_dot(g, hint) < 0) {
         for (int k = 0; k < NMONO; k++)
             res.coef[k] = -res.coef[k];
         for (int k = 0; k < 3; k++)
@@ -630,7 +621,7 @@ static c2b_status fit_core(const double *p, size_t n, const double *q, const dou
     }
 
     /* Residual: RMS of F(x_i) / |grad F(0)|, back in model units. */
-    double D = sqrt(dot3(g, g)), ss = 0;
+    double D = sqrt(c2b_vec3_dot(g, g)), ss = 0;
     for (size_t i = 0; i < n; i++) {
         double mono[NMONO], f = 0;
         monomials(ws->x + 3 * i, mono);
@@ -756,7 +747,7 @@ c2b_status c2b_quadric_estimate_mesh(const c2b_quadric_mesh *m, const c2b_quadri
                 const double *a = m->xyz + 3 * t[0], *b = m->xyz + 3 * t[1], *c = m->xyz + 3 * t[2];
                 double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
                 double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]}, cr[3];
-                cross3(e1, e2, cr);
+                c2b_vec3_cross(e1, e2, cr);
                 for (int j = 0; j < 3; j++)
                     hint[j] += cr[j];
             }
