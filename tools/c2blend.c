@@ -127,7 +127,7 @@ static int parse_args(int argc, char **argv, options *o)
 {
     memset(o, 0, sizeof *o);
     o->nu = o->nv = 11;
-    o->nmesh = 64;
+    o->nmesh = 0; /* not given: mesh uses 64, profile 201 */
     o->tol = 1e-6;
     o->degree_v = 5;
     o->max_poles = 400;
@@ -406,7 +406,7 @@ static int cmd_mesh(const options *o, const c2b_blend *b, c2b_spec *spec, double
     c2b_error err;
     c2b_error_clear(&err);
     c2b_mesh m;
-    c2b_status st = c2b_mesh_tessellate(b, spec, t, (int)o->nmesh, o->width, &m, &err);
+    c2b_status st = c2b_mesh_tessellate(b, spec, t, o->nmesh ? (int)o->nmesh : 64, o->width, &m, &err);
     if (!st)
         st = c2b_mesh_write(&m, o->out, &err);
     if (!st && m.degenerate)
@@ -501,7 +501,7 @@ static int cmd_profile(const options *o, const c2b_blend *b, c2b_spec *spec)
         for (int k = 0; k < 4; k++)
             vs[nvs++] = dom.v0 + (dom.v1 - dom.v0) * k / 4.0;
     }
-    int n = (int)(o->nmesh == 64 ? 201 : o->nmesh);
+    int n = o->nmesh ? (int)o->nmesh : 201;
     double width = c2b_spec_has_primaries(spec) ? o->width : 0.0;
     int strip = width > 0 ? (int)ceil(width * (n - 1) - 1e-9) : 0;
     size_t rows = (size_t)nvs * (size_t)(n + 2 * strip);
