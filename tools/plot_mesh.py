@@ -88,7 +88,8 @@ def main():
     fc = np.clip(base * shade[:, None], 0, 1)
     fig = plt.figure(figsize=(8, 7))
     ax = fig.add_subplot(111, projection="3d")
-    ax.add_collection3d(Poly3DCollection(tri, facecolors=fc, edgecolors="none", linewidths=0))
+    # Edges in the face colour hide the light seams between faces.
+    ax.add_collection3d(Poly3DCollection(tri, facecolors=fc, edgecolors=fc, linewidths=0.5))
     lo3, hi3 = xyz.min(axis=0), xyz.max(axis=0)
     ax.set_xlim(lo3[0], hi3[0])
     ax.set_ylim(lo3[1], hi3[1])
