@@ -99,12 +99,9 @@ c2b_status c2b_check_run(const c2b_blend *b, c2b_spec *spec, const c2b_check_opt
                 r->degenerate++;
                 continue;
             }
-            double cr[3] = {cb.normal[1] * cp.normal[2] - cb.normal[2] * cp.normal[1],
-                            cb.normal[2] * cp.normal[0] - cb.normal[0] * cp.normal[2],
-                            cb.normal[0] * cp.normal[1] - cb.normal[1] * cp.normal[0]};
-            double dot = cb.normal[0] * cp.normal[0] + cb.normal[1] * cp.normal[1] +
-                         cb.normal[2] * cp.normal[2];
-            upd(&r->g1, atan2(c2b_vec3_norm(cr), dot), v);
+            double cr[3];
+            c2b_vec3_cross(cb.normal, cp.normal, cr);
+            upd(&r->g1, atan2(c2b_vec3_norm(cr), c2b_vec3_dot(cb.normal, cp.normal)), v);
             /* Normal curvature across the trimline: the blend's S_u direction in 3-D. */
             double kb = 0, kp = 0;
             if (c2b_curv_normal_curvature_3d(pts_db, &cb, pts_db + 3, &kb, NULL) == C2B_OK &&
