@@ -1,0 +1,431 @@
+/*
+ * bench/compare: the papers' own solvers beside C2Blend's exact closed form (issue 6).
+ * Prints markdown tables; with --markdown FILE also writes them (atomically) to FILE,
+ * which is how docs/RESULTS.md is produced:
+ *   build/bench/compare --markdown docs/RESULTS.md      (or: make results)
+ * Tables:
+ *  1. thesis Table 3 (eqs. 127-129, t = 0.1) and Table 1 (eqs. 87-88, t = 0.2) analogues:
+ *     thesis-approx at M = 10, 15, 20 against the exact closed form, errors E1-E4
+ *     (thesis section 3.3.2.1) on 101 x 101 vertices, times at 51^2 .. 201^2 vertices;
+ *  2. seed 001 section 3: pseudo-Navier (M = N = 3, 49 points) against the closed form,
+ *     error eq. 24 on 100 x 100 points;
+ *  3. speed and accuracy ratios exact vs thesis-approx M = 20 against an independent
+ *     Chebyshev-collocation reference (tests/oracle), and frames per second of a
+ *     time-dependent blend with 64 modes at 101^2.
+ * Times are medians of repeated runs (wall clock, CLOCK_MONOTONIC), solve + evaluation.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdarg.h>
+#include <time.h>
+
+#include "approx_examples.h"
+#include "c2b_atomic.h"
+#include "cheb_bvp.h"
+
+typedef struct out {
+    FILE *md; /* may be NULL */
+} out;
+
+static void emit(out *o, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    if (o->md) {
+        va_start(ap, fmt);
+        vfprintf(o->md, fmt, ap);
+        va_end(ap);
+    }
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static int cmpd(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *x, int n)
+{
+    qsort(x, (size_t)n, sizeof *x, cmpd);
+    return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+
+static int g_reps = 9;
+
+/* median time (s) of: create + evaluate an n x n grid, for the exact blend (M = 0) or
+ * thesis-approx with M terms */
+static double time_solve(const c2b_problem *pb, const ex_thesis *x, int M, int n)
+{
+    double *u = malloc(sizeof(double) * n), *v = malloc(sizeof(double) * n);
+    double *buf = malloc(sizeof(double) * 3 * (size_t)n * n), t[64];
+    ex_linspace((size_t)n, 0, 1, u);
+    ex_linspace((size_t)n, 0, 1, v);
+    for (int r = 0; r < g_reps; r++) {
+        double t0 = now();
+        if (M == 0) {
+            c2b_blend *b = NULL;
+            c2b_blend_create(pb, &b, NULL);
+            c2b_blend_eval_grid(b, (size_t)n, u, (size_t)n, v, 0, buf, NULL);
+            c2b_blend_destroy(b);
+        } else {
+            c2b_approx_options o = c2b_approx_options_default();
+            o.M = M;
+            c2b_approx *a = NULL;
+            c2b_approx_create(x->shape, &x->dom, &x->vd, x->t, &o, &a, NULL);
+            c2b_approx_eval_grid(a, (size_t)n, u, (size_t)n, v, 0, buf, NULL);
+            c2b_approx_destroy(a);
+        }
+        t[r] = now() - t0;
+    }
+    free(u);
+    free(v);
+    free(buf);
+    return median(t, g_reps);
+}
+
+/* The thesis' published Table 3 / Table 1 values: rows E1..E4 (Table 1 lists AME, AAE,
+ * RME, RAE = E1, E2, E3, E4), then times at 51^2..201^2 (Table 1: one time). */
+static const double pub3[4][3] = {{4.35e-2, 3.17e-3, 2.22e-5}, {1.82e-2, 1.31e-3, 1.10e-5},
+                                  {1.11e-2, 8.06e-4, 5.64e-6}, {4.63e-3, 3.34e-4, 2.80e-6}};
+static const double pub3t[4][4] = {{35, 60, 98, 47}, {69, 112, 197, 109}, {118, 184, 288, 187}, {183, 269, 394, 339}};
+static const double pub1[4][3] = {{4.55e-2, 4.85e-3, 6.40e-5}, {1.71e-2, 1.65e-3, 1.79e-5},
+                                  {2.11e-2, 2.25e-3, 2.97e-5}, {7.95e-3, 7.65e-4, 8.31e-6}};
+static const double pub1t[4] = {28.84, 59.87, 108.22, 14.88};
+
+#define NE 101
+
+static int thesis_table(out *o, int which)
+{
+    static const char *files[2] = {"thesis_eq127_129.json", "thesis_eq087_088.json"};
+    ex_thesis x;
+    ex_thesis_init(&x, which);
+    c2b_spec *sp = ex_spec(files[which], NULL, NULL);
+    c2b_blend *b = NULL;
+    c2b_error err;
+    if (!sp || c2b_blend_create(c2b_spec_problem(sp), &b, &err)) {
+        fprintf(stderr, "compare: %s does not solve\n", files[which]);
+        return 1;
+    }
+    static double u[NE], v[NE], ref[NE * NE * 3], app[NE * NE * 3];
+    ex_linspace(NE, 0, 1, u);
+    ex_linspace(NE, 0, 1, v);
+    c2b_blend_eval_grid(b, NE, u, NE, v, 0, ref, &err);
+    double e[3][5];
+    static const int Ms[3] = {10, 15, 20};
+    for (int k = 0; k < 3; k++) {
+        c2b_approx_options op = c2b_approx_options_default();
+        op.M = Ms[k];
+        c2b_approx *a = NULL;
+        if (c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, &op, &a, &err)) {
+            fprintf(stderr, "compare: %s\n", err.msg);
+            return 1;
+        }
+        c2b_approx_eval_grid(a, NE, u, NE, v, 0, app, &err);
+        ex_thesis_errors(NE, NE, app, ref, e[k]);
+        c2b_approx_destroy(a);
+    }
+    const double(*pub)[3] = which ? pub1 : pub3;
+    emit(o, "\n### %s analogue: %s at t = %.1f\n\n", which ? "Thesis Table 1" : "Thesis Table 3",
+         which ? "eqs. 87-88 (two elliptic cylinders)" : "eqs. 127-129 (two elliptic cones)", x.t);
+    emit(o, "thesis-approx (%s, I = J = 100) against C2Blend's exact closed form; errors on 101 x 101 "
+            "vertices, D = %.4f (largest distance between two points of equal u). Published values in "
+            "brackets.\n\n",
+         "section 3.4.1, eq. 120", e[0][4]);
+    emit(o, "| | M = 10 | M = 15 | M = 20 | exact (CFS) |\n|---|---|---|---|---|\n");
+    static const char *names[4] = {"E1 (abs. max)", "E2 (abs. mean)", "E3 (rel. max)", "E4 (rel. mean)"};
+    for (int r = 0; r < 4; r++) {
+        emit(o, "| %s |", names[r]);
+        for (int k = 0; k < 3; k++)
+            emit(o, " %.3g (%.3g) |", e[k][r], pub[r][k]);
+        emit(o, " 0 (0) |\n");
+    }
+    static const int ns[4] = {51, 101, 151, 201};
+    for (int r = 0; r < 4; r++) {
+        emit(o, "| T (ms), %dx%d |", ns[r], ns[r]);
+        for (int k = 0; k <= 3; k++) {
+            double tm = 1e3 * time_solve(c2b_spec_problem(sp), &x, k < 3 ? Ms[k] : 0, ns[r]);
+            if (which == 0)
+                emit(o, " %.3g (%.0f) |", tm, pub3t[r][k]);
+            else if (r == 1)
+                emit(o, " %.3g (%.2f) |", tm, pub1t[k]);
+            else
+                emit(o, " %.3g (—) |", tm);
+        }
+        emit(o, "\n");
+    }
+    emit(o, "\nConvergence from M = 10 to M = 20: E4 falls %.3gx here, %.0fx in the thesis.\n",
+         e[0][3] / e[2][3], pub[3][0] / pub[3][2]);
+    c2b_blend_destroy(b);
+    c2b_spec_destroy(sp);
+    return 0;
+}
+
+#define NS 100
+
+static int seed001_table(out *o)
+{
+    c2b_error err;
+    c2b_spec *full = ex_spec("seed001_eq17.json", NULL, NULL);
+    c2b_spec *grp1 = ex_spec("seed001_eq17.json", "\"a2\": 0.000102", "\"a2\": 0.0");
+    c2b_blend *bf = NULL, *b1 = NULL;
+    if (!full || !grp1 || c2b_blend_create(c2b_spec_problem(full), &bf, &err) ||
+        c2b_blend_create(c2b_spec_problem(grp1), &b1, &err)) {
+        fprintf(stderr, "compare: seed001_eq17.json does not solve\n");
+        return 1;
+    }
+    ex_seed001 ex;
+    ex_seed001_init(&ex);
+    static double u[NS], v[NS], ref[NS * NS * 3], part[NS * NS * 3], app[NS * NS * 3];
+    ex_linspace(NS, 0, 1, u);
+    ex_linspace(NS, 0, 2 * C2B_PI, v);
+    c2b_blend_eval_grid(bf, NS, u, NS, v, 0, ref, &err);
+    c2b_blend_eval_grid(b1, NS, u, NS, v, 0, part, &err);
+    emit(o, "\n### Seed 001, section 3: pseudo-Navier against the closed form (eqs. 17-19)\n\n");
+    emit(o, "x = closed form of the first-group data (a0 + a1 v, -r cos v) + pseudo-Navier for a2 e^v "
+            "(eq. 18); reference: C2Blend's closed form of all of eq. 17 (eq. 19). Error eq. 24 on "
+            "100 x 100 points (u_i = i/99, v_j = 2 pi j/99). Shape b = 1, c = 18, d = 81.\n\n");
+    emit(o, "| method | settings | E (eq. 24), ours | E, seed 001 | solve time (us), ours |\n|---|---|---|---|---|\n");
+    struct { int M, N, ci, grid; const char *what; double pub; } cases[] = {
+        {3, 3, 6, C2B_NAVIER_GRID_INTERIOR, "M = N = 3, 7 x 7 interior points", 6.637916e-4},
+        {3, 3, 6, C2B_NAVIER_GRID_CLOSED, "M = N = 3, 7 x 7 points incl. boundary", 6.637916e-4},
+        {6, 6, 20, C2B_NAVIER_GRID_INTERIOR, "M = N = 6, 21 x 21 interior points", NAN},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        c2b_navier_options op = c2b_navier_options_default();
+        op.M = cases[k].M, op.N = cases[k].N, op.ci = op.cj = cases[k].ci, op.grid = cases[k].grid;
+        c2b_navier *nv = NULL;
+        double t[64];
+        c2b_status st = C2B_OK;
+        for (int r = 0; r < g_reps; r++) {
+            c2b_navier_destroy(nv);
+            nv = NULL;
+            double t0 = now();
+            st = c2b_navier_create(ex.shape, &ex.dom, &ex.vd, 0, &op, &nv, &err);
+            t[r] = now() - t0;
+        }
+        char pub[32] = "—";
+        if (!isnan(cases[k].pub))
+            snprintf(pub, sizeof pub, "%.6e", cases[k].pub);
+        if (st) {
+            emit(o, "| pseudo-Navier | %s | fails: %s | %s | — |\n", cases[k].what, err.msg, pub);
+            continue;
+        }
+        c2b_navier_eval_grid(nv, NS, u, NS, v, 0, app, &err);
+        for (int i = 0; i < NS * NS * 3; i++)
+            app[i] += part[i];
+        emit(o, "| pseudo-Navier | %s | %.6e | %s | %.3g |\n", cases[k].what,
+             ex_seed001_error(NS * NS, app, ref), pub, 1e6 * median(t, g_reps));
+        c2b_navier_destroy(nv);
+    }
+    double t[64];
+    for (int r = 0; r < g_reps; r++) {
+        c2b_blend *b = NULL;
+        double t0 = now();
+        c2b_blend_create(c2b_spec_problem(full), &b, &err);
+        t[r] = now() - t0;
+        c2b_blend_destroy(b);
+    }
+    emit(o, "| closed form (C2Blend) | all of eq. 17 | 0 (reference) | 0 | %.3g |\n", 1e6 * median(t, g_reps));
+    emit(o, "| pseudo-spectral | N = 2 / N = 5 | not implemented | 5.845711e-02 / 6.294766e-02 | — |\n");
+    emit(o, "| Fourier series | N = 20 / N = 100 | not implemented | 6.565263e-02 / 6.513351e-02 | — |\n");
+    c2b_blend_destroy(bf);
+    c2b_blend_destroy(b1);
+    c2b_spec_destroy(full);
+    c2b_spec_destroy(grp1);
+    return 0;
+}
+
+/* Independent reference for eqs. 127-129: each of x, y is G(u) times sin/cos(2 pi v), G from
+ * the Chebyshev collocation oracle; z is the quintic Hermite polynomial of its constants. */
+static int oracle_surface(const ex_thesis *x, size_t n, const double *u, const double *v, double *s)
+{
+    double beta = -4 * C2B_PI * C2B_PI, c[4] = {1, beta, beta * beta, beta * beta * beta};
+    double *G = malloc(sizeof(double) * 4 * n * 2);
+    for (int cc = 0; cc < 2; cc++) {
+        double d[6] = {0};
+        for (int side = 0; side < 2; side++)
+            for (int p = 0; p < 2; p++) {
+                const ex_trig *tr = &x->trig[cc][side][p];
+                d[3 * side + p] = tr->a0 + tr->a1 * exp(tr->s * x->t);
+            }
+        if (oracle_cheb_bvp(3, c, -1, NULL, d, 0, (int)n, u, G + 4 * n * cc, NULL))
+            return 1;
+    }
+    double zc[6];
+    for (int l = 0; l < 6; l++)
+        zc[l] = x->zc[l / 3][l % 3].c;
+    for (size_t i = 0; i < n; i++) {
+        double t = u[i], t2 = t * t, t3 = t2 * t;
+        double g[6] = {1 - 10 * t3 + 15 * t2 * t2 - 6 * t3 * t2, (1 - 6 * t2 + 8 * t3 - 3 * t2 * t2) * t,
+                       (0.5 - 1.5 * t + 1.5 * t2 - 0.5 * t3) * t2, (10 - 15 * t + 6 * t2) * t3,
+                       (-4 + 7 * t - 3 * t2) * t3, (0.5 - t + 0.5 * t2) * t3};
+        double z = 0;
+        for (int l = 0; l < 6; l++)
+            z += zc[l] * g[l];
+        for (size_t j = 0; j < n; j++) {
+            double *p = s + 3 * (i * n + j);
+            p[0] = G[4 * i] * sin(2 * C2B_PI * v[j]);
+            p[1] = G[4 * n + 4 * i] * cos(2 * C2B_PI * v[j]);
+            p[2] = z;
+        }
+    }
+    free(G);
+    return 0;
+}
+
+/* Time-dependent data with 64 modes: sum_{k=1..64} cos(k t + phase) / k^2 sin(2 pi k v) */
+typedef struct tdat { double scale, phase; } tdat;
+static double tdat_fn(void *ctx, double v, double t)
+{
+    const tdat *d = ctx;
+    double s = 0;
+    for (int k = 1; k <= 64; k++)
+        s += cos(k * t + d->phase) / ((double)k * k) * sin(2 * C2B_PI * k * v + d->phase);
+    return d->scale * s;
+}
+
+static int ratios_table(out *o)
+{
+    ex_thesis x;
+    ex_thesis_init(&x, 0);
+    c2b_spec *sp = ex_spec("thesis_eq127_129.json", NULL, NULL);
+    c2b_blend *b = NULL;
+    c2b_approx *a = NULL;
+    c2b_approx_options op = c2b_approx_options_default();
+    c2b_error err;
+    if (!sp || c2b_blend_create(c2b_spec_problem(sp), &b, &err) ||
+        c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, &op, &a, &err)) {
+        fprintf(stderr, "compare: ratios: cannot solve\n");
+        return 1;
+    }
+    static double u[NE], v[NE], orc[NE * NE * 3], ex[NE * NE * 3], ap[NE * NE * 3];
+    ex_linspace(NE, 0, 1, u);
+    ex_linspace(NE, 0, 1, v);
+    if (oracle_surface(&x, NE, u, v, orc)) {
+        fprintf(stderr, "compare: oracle failed\n");
+        return 1;
+    }
+    c2b_blend_eval_grid(b, NE, u, NE, v, 0, ex, &err);
+    c2b_approx_eval_grid(a, NE, u, NE, v, 0, ap, &err);
+    double ee[5], ea[5];
+    ex_thesis_errors(NE, NE, ex, orc, ee);
+    ex_thesis_errors(NE, NE, ap, orc, ea);
+    double te = time_solve(c2b_spec_problem(sp), &x, 0, NE), ta = time_solve(NULL, &x, 20, NE);
+    emit(o, "\n### Exact closed form against thesis-approx (M = 20), eqs. 127-129 at t = 0.1, 101 x 101 vertices\n\n");
+    emit(o, "Reference: an independent Chebyshev-collocation solution of each mode ODE (tests/oracle). "
+            "Time = solve + evaluation, median of %d runs.\n\n", g_reps);
+    emit(o, "| | exact (C2Blend) | thesis-approx M = 20 | ratio | target |\n|---|---|---|---|---|\n");
+    emit(o, "| E1 against the oracle | %.3g | %.3g | %.3g | >= 1e4 |\n", ee[0], ea[0], ea[0] / fmax(ee[0], 1e-300));
+    emit(o, "| E4 against the oracle | %.3g | %.3g | %.3g | >= 1e4 |\n", ee[3], ea[3], ea[3] / fmax(ee[3], 1e-300));
+    emit(o, "| time (ms) | %.3g | %.3g | %.3g | >= 10 |\n", 1e3 * te, 1e3 * ta, ta / te);
+    c2b_blend_destroy(b);
+    c2b_approx_destroy(a);
+    c2b_spec_destroy(sp);
+
+    /* frames per second: 64 time-dependent modes per datum, 101^2 evaluation */
+    c2b_problem pb = c2b_problem_default();
+    pb.dom.v0 = 0, pb.dom.v1 = 1, pb.dom.periodic = 1;
+    static tdat td[3][2];
+    for (int c = 0; c < 3; c++)
+        for (int side = 0; side < 2; side++) {
+            td[c][side].scale = side ? 0.8 : 1.0;
+            td[c][side].phase = 0.3 * c + side;
+            c2b_bfunc f = {tdat_fn, NULL, &td[c][side], 1, NULL, 0, 0, "fps datum"};
+            pb.data[c][side][0] = f;
+        }
+    c2b_blend *bt = NULL;
+    if (c2b_blend_create(&pb, &bt, &err)) {
+        fprintf(stderr, "compare: fps blend: %s\n", err.msg);
+        return 1;
+    }
+    int frames = 60;
+    double *t = malloc(sizeof(double) * frames);
+    for (int f = 0; f < frames; f++) {
+        double t0 = now();
+        c2b_blend_set_time(bt, 0.01 * (f + 1), &err);
+        c2b_blend_eval_grid(bt, NE, u, NE, v, 0, ex, &err);
+        t[f] = now() - t0;
+    }
+    double mt = median(t, frames);
+    emit(o, "| frames per second, time-dependent blend, 64 modes in each of x, y, z at both trimlines, "
+            "101 x 101 | %.0f (%.3g ms per frame: re-projection + evaluation) | — | — | >= 60 |\n",
+         1.0 / mt, 1e3 * mt);
+    free(t);
+    c2b_blend_destroy(bt);
+    return 0;
+}
+
+static void machine(out *o)
+{
+    char model[256] = "unknown";
+    FILE *fp = fopen("/proc/cpuinfo", "r");
+    int ncpu = 0;
+    if (fp) {
+        char line[512];
+        while (fgets(line, sizeof line, fp)) {
+            if (!strncmp(line, "model name", 10)) {
+                ncpu++;
+                char *p = strchr(line, ':');
+                if (p) {
+                    snprintf(model, sizeof model, "%s", p + 2);
+                    model[strcspn(model, "\n")] = 0;
+                }
+            }
+        }
+        fclose(fp);
+    }
+    emit(o, "Machine: %s, %d logical CPUs (shared with other jobs while measured); one thread. "
+            "Times are medians of %d runs.\n", model, ncpu, g_reps);
+}
+
+int main(int argc, char **argv)
+{
+    const char *md = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--markdown") && i + 1 < argc)
+            md = argv[++i];
+        else if (!strcmp(argv[i], "--reps") && i + 1 < argc)
+            g_reps = atoi(argv[++i]);
+        else {
+            fprintf(stderr, "usage: compare [--markdown FILE] [--reps N]\n");
+            return 2;
+        }
+    }
+    if (g_reps < 1 || g_reps > 64) {
+        fprintf(stderr, "compare: --reps needs 1..64\n");
+        return 2;
+    }
+    out o = {NULL};
+    c2b_atomic_file af;
+    c2b_error err;
+    if (md) {
+        if (c2b_atomic_open(&af, md, &err)) {
+            fprintf(stderr, "compare: %s\n", err.msg);
+            return 2;
+        }
+        o.md = af.fp;
+    }
+    emit(&o, "# Results: the papers' solvers beside C2Blend\n\n"
+             "Generated by `bench/compare --markdown docs/RESULTS.md` (`make results`); do not edit by hand. "
+             "Method notes and the reasons for differences from the papers are in "
+             "docs/APPROX.md.\n\n");
+    machine(&o);
+    int rc = thesis_table(&o, 0) || thesis_table(&o, 1) || seed001_table(&o) || ratios_table(&o);
+    if (md) {
+        if (rc) {
+            c2b_atomic_abort(&af);
+        } else if (c2b_atomic_commit(&af, &err)) {
+            fprintf(stderr, "compare: %s\n", err.msg);
+            return 2;
+        }
+    }
+    return rc;
+}

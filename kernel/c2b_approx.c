@@ -1,0 +1,375 @@
+/* Thesis approximate analytic solutions (sections 3.3 and 3.4.1); see c2b_approx.h. */
+#include "c2b_approx.h"
+
+#include <lapacke.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "c2b_constants.h"
+#include "c2b_poly.h"
+
+#define NDATA 3 /* constraints per trimline for C2 */
+
+typedef struct dsol {
+    c2b_approx_group group;
+    int rank;
+    double c[C2B_APPROX_MAX_M];
+} dsol;
+
+struct c2b_approx {
+    double shape[C2B_NCOMP][5];
+    c2b_vdomain dom;
+    c2b_vdata data;
+    c2b_approx_options opt;
+    double t;
+    c2b_poly g[2 * NDATA];   /* quintic Hermite basis, thesis eq. 18 / 65 / 107 */
+    dsol sol[C2B_NCOMP][2][NDATA];
+    double resid_ss;         /* residual sum of squares of the last fit */
+    long resid_n;
+    /* workspace: collocation tables */
+    double *phi;   /* [(NI+1)][4][M]: phi_m^{(0,2,4,6)}(u_i) */
+    double *gk;    /* [(NI+1)][4][6]: g_l^{(0,2,4,6)}(u_i) */
+    double *fv;    /* [(NJ+1)][4]: C^{(0,2,4,6)}(v_j) */
+    double *A, *b, *cn;
+    int *jpvt;
+};
+
+c2b_approx_options c2b_approx_options_default(void)
+{
+    c2b_approx_options o = {20, 100, 100, 1e-13, 1e-12, C2B_APPROX_DIFFERENTIAL};
+    return o;
+}
+
+/* phi_m^{(k)}(u) = m pi f_m^{(k)}(u) - (m pi)^k sin(m pi u + k pi/2), f_m = g2 + (-1)^m g5
+ * (thesis eq. 120; g2, g5 are basis[1], basis[4]). */
+static double phi_deriv(const c2b_poly *g, int m, int k, double u)
+{
+    double d2[7], d5[7];
+    c2b_poly_eval(&g[1], u, k, d2);
+    c2b_poly_eval(&g[4], u, k, d5);
+    double w = m * C2B_PI, sgn = (m % 2) ? -1.0 : 1.0;
+    double s;
+    switch (k % 4) {
+    case 0: s = sin(w * u); break;
+    case 1: s = cos(w * u); break;
+    case 2: s = -sin(w * u); break;
+    default: s = -cos(w * u); break;
+    }
+    return w * (d2[k] + sgn * d5[k]) - pow(w, k) * s;
+}
+
+static double poly_d(const c2b_poly *p, int k, double u)
+{
+    double d[7];
+    c2b_poly_eval(p, u, k, d);
+    return d[k];
+}
+
+static void free_work(c2b_approx *a)
+{
+    free(a->phi);
+    free(a->gk);
+    free(a->fv);
+    free(a->A);
+    free(a->b);
+    free(a->cn);
+    free(a->jpvt);
+    a->phi = a->gk = a->fv = a->A = a->b = a->cn = NULL;
+    a->jpvt = NULL;
+}
+
+void c2b_approx_destroy(c2b_approx *a)
+{
+    if (!a)
+        return;
+    free_work(a);
+    free(a);
+}
+
+static double grid_v(const c2b_approx *a, int j)
+{
+    return a->dom.v0 + (a->dom.v1 - a->dom.v0) * j / a->opt.cj;
+}
+
+/* Classify and solve one datum at time t into *s. */
+static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, double t, dsol *s,
+                              c2b_error *err)
+{
+    const c2b_vdfunc *f = &a->data.f[c][side][p];
+    const int NI = a->opt.ci, NJ = a->opt.cj, M = a->opt.M;
+    const int l = side * NDATA + p;
+    memset(s, 0, sizeof *s);
+    if (!f->fn)
+        return C2B_OK;
+    double scale = 0, d1 = 0, d2 = 0, beta_num = 0, beta_den = 0;
+    for (int j = 0; j <= NJ; j++) {
+        double v = grid_v(a, j), *fj = a->fv + 4 * j;
+        for (int q = 0; q < 4; q++)
+            fj[q] = f->fn(f->ctx, 2 * q, v, t);
+        double f1 = f->fn(f->ctx, 1, v, t);
+        for (int q = 0; q < 4; q++)
+            if (!isfinite(fj[q]))
+                return c2b_error_set(err, C2B_ERR_SPEC,
+                                     "thesis-approx: datum %c, side %d, order %d: d^%d/dv^%d is not finite at v=%g, t=%g",
+                                     "xyz"[c], side, p, 2 * q, 2 * q, v, t);
+        scale = fmax(scale, fabs(fj[0]));
+        d1 = fmax(d1, fabs(f1));
+        d2 = fmax(d2, fabs(fj[1]));
+        beta_num += fj[1] * fj[0];
+        beta_den += fj[0] * fj[0];
+    }
+    if (scale == 0 && d2 == 0) {
+        s->group = C2B_APPROX_ZERO;
+        return C2B_OK;
+    }
+    double tol = a->opt.zero_rel * fmax(scale, 1e-300);
+    int exact = a->opt.approach == C2B_APPROX_DECOMPOSITION ? (d1 <= tol && d2 <= tol) : (d2 <= tol);
+    if (exact) {
+        s->group = C2B_APPROX_HERMITE;
+        return C2B_OK;
+    }
+    s->group = C2B_APPROX_SERIES;
+    if (beta_den > 0) {
+        double beta = beta_num / beta_den, dev = 0;
+        for (int j = 0; j <= NJ; j++)
+            dev = fmax(dev, fabs(a->fv[4 * j + 1] - beta * a->fv[4 * j]));
+        if (dev <= 1e3 * a->opt.zero_rel * fmax(d2, 1e-300))
+            s->group = C2B_APPROX_MODE;
+    }
+    /* Residual rows (eq. 123): alpha_m(u_i, v_j), rhs phi(u_i, v_j) (eq. 122). */
+    const double *sh = a->shape[c];
+    const long rows = (long)(NI + 1) * (NJ + 1);
+    for (int i = 0; i <= NI; i++) {
+        const double *ph = a->phi + (size_t)i * 4 * M;
+        const double *gl = a->gk + (size_t)i * 4 * 6;
+        for (int j = 0; j <= NJ; j++) {
+            const double *fj = a->fv + 4 * j;
+            long r = (long)i * (NJ + 1) + j;
+            /* L[h f] = gamma h6 f + eta h4 f2 + lambda h2 f4 + rho h f6 */
+            for (int m = 0; m < M; m++)
+                a->A[r + rows * m] = sh[0] * ph[3 * M + m] * fj[0] + sh[1] * ph[2 * M + m] * fj[1] +
+                                     sh[2] * ph[1 * M + m] * fj[2] + sh[3] * ph[m] * fj[3];
+            a->b[r] = sh[0] * gl[3 * 6 + l] * fj[0] + sh[1] * gl[2 * 6 + l] * fj[1] +
+                      sh[2] * gl[1 * 6 + l] * fj[2] + sh[3] * gl[l] * fj[3];
+        }
+    }
+    double bnorm = 0;
+    for (long r = 0; r < rows; r++)
+        bnorm += a->b[r] * a->b[r];
+    for (int m = 0; m < M; m++) {
+        double nrm = 0;
+        for (long r = 0; r < rows; r++)
+            nrm += a->A[r + rows * m] * a->A[r + rows * m];
+        nrm = sqrt(nrm);
+        a->cn[m] = nrm > 0 ? nrm : 1.0;
+        for (long r = 0; r < rows; r++)
+            a->A[r + rows * m] /= a->cn[m];
+        a->jpvt[m] = 0;
+    }
+    lapack_int rank = 0;
+    lapack_int info = LAPACKE_dgelsy(LAPACK_COL_MAJOR, (lapack_int)rows, M, 1, a->A,
+                                     (lapack_int)rows, a->b, (lapack_int)rows, a->jpvt,
+                                     a->opt.rcond, &rank);
+    if (info != 0)
+        return c2b_error_set(err, C2B_ERR_NUMERIC,
+                             "thesis-approx: datum %c, side %d, order %d: dgelsy failed (info %d)",
+                             "xyz"[c], side, p, (int)info);
+    if (rank < M)
+        return c2b_error_set(err, C2B_ERR_NUMERIC,
+                             "thesis-approx: datum %c, side %d, order %d: least squares rank %d < M = %d "
+                             "(reduce M or refine the collocation grid)",
+                             "xyz"[c], side, p, (int)rank, M);
+    s->rank = (int)rank;
+    for (int m = 0; m < M; m++)
+        s->c[m] = a->b[m] / a->cn[m];
+    /* residual: b - A c; dgelsy leaves rows M.. of b as the orthogonal complement part */
+    double rs = 0;
+    for (long r = M; r < rows; r++)
+        rs += a->b[r] * a->b[r];
+    (void)bnorm;
+    a->resid_ss += rs;
+    a->resid_n += rows;
+    return C2B_OK;
+}
+
+static c2b_status solve_all(c2b_approx *a, double t, int only_time_dependent, c2b_error *err)
+{
+    dsol tmp[C2B_NCOMP][2][NDATA];
+    memcpy(tmp, a->sol, sizeof tmp);
+    a->resid_ss = 0;
+    a->resid_n = 0;
+    for (int c = 0; c < C2B_NCOMP; c++)
+        for (int side = 0; side < 2; side++)
+            for (int p = 0; p < NDATA; p++) {
+                if (only_time_dependent && !a->data.f[c][side][p].time_dependent)
+                    continue;
+                c2b_status st = solve_datum(a, c, side, p, t, &tmp[c][side][p], err);
+                if (st)
+                    return st;
+            }
+    memcpy(a->sol, tmp, sizeof tmp);
+    a->t = t;
+    return C2B_OK;
+}
+
+c2b_status c2b_approx_create(const double shape[C2B_NCOMP][5], const c2b_vdomain *dom,
+                             const c2b_vdata *data, double t, const c2b_approx_options *opt,
+                             c2b_approx **out, c2b_error *err)
+{
+    if (!shape || !dom || !data || !out)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_approx_create: NULL argument");
+    *out = NULL;
+    c2b_approx_options o = opt ? *opt : c2b_approx_options_default();
+    if (o.M < 1 || o.M > C2B_APPROX_MAX_M)
+        return c2b_error_set(err, C2B_ERR_ARG, "M: %d is outside 1..%d", o.M, C2B_APPROX_MAX_M);
+    if (o.ci < 1 || o.cj < 1 || (long)(o.ci + 1) * (o.cj + 1) < o.M || o.ci > 100000 || o.cj > 100000)
+        return c2b_error_set(err, C2B_ERR_ARG,
+                             "collocation: [%d, %d] must be >= 1 with (I+1)(J+1) >= M = %d", o.ci, o.cj, o.M);
+    if (!(o.rcond > 0 && o.rcond < 1) || !(o.zero_rel > 0 && o.zero_rel < 1))
+        return c2b_error_set(err, C2B_ERR_ARG, "thesis-approx: rcond and zero_rel must be in (0, 1)");
+    if (!isfinite(t))
+        return c2b_error_set(err, C2B_ERR_ARG, "time: not finite");
+    if (!(dom->v1 > dom->v0) || !isfinite(dom->v0) || !isfinite(dom->v1))
+        return c2b_error_set(err, C2B_ERR_SPEC, "v_range: [%g, %g] is empty", dom->v0, dom->v1);
+    for (int c = 0; c < C2B_NCOMP; c++) {
+        for (int k = 0; k < 4; k++)
+            if (!isfinite(shape[c][k]))
+                return c2b_error_set(err, C2B_ERR_SPEC, "shape: component %c parameter %d is not finite",
+                                     "xyz"[c], k);
+        if (shape[c][0] == 0)
+            return c2b_error_set(err, C2B_ERR_SPEC, "shape: gamma of component %c is zero", "xyz"[c]);
+    }
+    c2b_approx *a = calloc(1, sizeof *a);
+    if (!a)
+        return c2b_error_set(err, C2B_ERR_NOMEM, "thesis-approx: out of memory");
+    memcpy(a->shape, shape, sizeof a->shape);
+    a->dom = *dom;
+    a->data = *data;
+    a->opt = o;
+    c2b_status st = c2b_poly_hermite(NDATA, a->g, err);
+    if (st) {
+        c2b_approx_destroy(a);
+        return st;
+    }
+    const int NI = o.ci, NJ = o.cj, M = o.M;
+    const size_t rows = (size_t)(NI + 1) * (NJ + 1);
+    a->phi = malloc(sizeof(double) * (size_t)(NI + 1) * 4 * M);
+    a->gk = malloc(sizeof(double) * (size_t)(NI + 1) * 4 * 6);
+    a->fv = malloc(sizeof(double) * (size_t)(NJ + 1) * 4);
+    a->A = malloc(sizeof(double) * rows * M);
+    a->b = malloc(sizeof(double) * rows);
+    a->cn = malloc(sizeof(double) * M);
+    a->jpvt = malloc(sizeof(int) * M);
+    if (!a->phi || !a->gk || !a->fv || !a->A || !a->b || !a->cn || !a->jpvt) {
+        c2b_approx_destroy(a);
+        return c2b_error_set(err, C2B_ERR_NOMEM, "thesis-approx: out of memory for a %zu x %d system",
+                             rows, M);
+    }
+    for (int i = 0; i <= NI; i++) {
+        double u = (double)i / NI;
+        for (int q = 0; q < 4; q++) {
+            for (int m = 0; m < M; m++)
+                a->phi[(size_t)i * 4 * M + q * M + m] = phi_deriv(a->g, m + 1, 2 * q, u);
+            for (int l = 0; l < 6; l++)
+                a->gk[(size_t)i * 24 + q * 6 + l] = poly_d(&a->g[l], 2 * q, u);
+        }
+    }
+    st = solve_all(a, t, 0, err);
+    if (st) {
+        c2b_approx_destroy(a);
+        return st;
+    }
+    *out = a;
+    return C2B_OK;
+}
+
+c2b_status c2b_approx_set_time(c2b_approx *a, double t, c2b_error *err)
+{
+    if (!a || !isfinite(t))
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_approx_set_time: NULL object or non-finite t");
+    return solve_all(a, t, 1, err);
+}
+
+c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u, size_t nv,
+                                const double *v, int order, double *out, c2b_error *err)
+{
+    if (!a || (!u && nu) || (!v && nv) || (!out && nu && nv) || order < 0 || order > 2)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_approx_eval_grid: NULL buffer or order outside 0..2");
+    const int nd = (order + 1) * (order + 2) / 2, M = a->opt.M;
+    const int nk = order + 1; /* u- and v-derivatives 0..order */
+    double *hu = malloc(sizeof(double) * (nu ? nu : 1) * C2B_NCOMP * 6 * nk);
+    double *fvv = malloc(sizeof(double) * (nv ? nv : 1) * C2B_NCOMP * 6 * nk);
+    if (!hu || !fvv) {
+        free(hu);
+        free(fvv);
+        return c2b_error_set(err, C2B_ERR_NOMEM, "c2b_approx_eval_grid: out of memory");
+    }
+    /* H_l^{(k)}(u_i) per component and datum */
+    for (size_t i = 0; i < nu; i++) {
+        double gd[6][3], ph[C2B_APPROX_MAX_M][3];
+        for (int l = 0; l < 6; l++) {
+            double d[7];
+            c2b_poly_eval(&a->g[l], u[i], order, d);
+            for (int k = 0; k < nk; k++)
+                gd[l][k] = d[k];
+        }
+        for (int m = 0; m < M; m++)
+            for (int k = 0; k < nk; k++)
+                ph[m][k] = phi_deriv(a->g, m + 1, k, u[i]);
+        for (int c = 0; c < C2B_NCOMP; c++)
+            for (int l = 0; l < 6; l++) {
+                const dsol *s = &a->sol[c][l / NDATA][l % NDATA];
+                for (int k = 0; k < nk; k++) {
+                    double h = gd[l][k];
+                    if (s->group >= C2B_APPROX_MODE)
+                        for (int m = 0; m < M; m++)
+                            h -= s->c[m] * ph[m][k];
+                    hu[((i * C2B_NCOMP + c) * 6 + l) * nk + k] = s->group ? h : 0.0;
+                }
+            }
+    }
+    for (size_t j = 0; j < nv; j++)
+        for (int c = 0; c < C2B_NCOMP; c++)
+            for (int l = 0; l < 6; l++) {
+                const c2b_vdfunc *f = &a->data.f[c][l / NDATA][l % NDATA];
+                for (int k = 0; k < nk; k++)
+                    fvv[((j * C2B_NCOMP + c) * 6 + l) * nk + k] = f->fn ? f->fn(f->ctx, k, v[j], a->t) : 0.0;
+            }
+    static const int du[6] = {0, 1, 0, 2, 1, 0}, dv[6] = {0, 0, 1, 0, 1, 2};
+    for (size_t i = 0; i < nu; i++)
+        for (size_t j = 0; j < nv; j++) {
+            double *o = out + (i * nv + j) * (size_t)nd * 3;
+            for (int e = 0; e < nd; e++)
+                for (int c = 0; c < C2B_NCOMP; c++) {
+                    double sum = 0;
+                    const double *h = hu + (i * C2B_NCOMP + c) * 6 * nk;
+                    const double *f = fvv + (j * C2B_NCOMP + c) * 6 * nk;
+                    for (int l = 0; l < 6; l++)
+                        sum += h[l * nk + du[e]] * f[l * nk + dv[e]];
+                    o[e * 3 + c] = sum;
+                }
+        }
+    free(hu);
+    free(fvv);
+    return C2B_OK;
+}
+
+c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, double *coef,
+                                  int *rank)
+{
+    if (!a || c < 0 || c >= C2B_NCOMP || side < 0 || side > 1 || p < 0 || p >= NDATA)
+        return C2B_APPROX_ZERO;
+    const dsol *s = &a->sol[c][side][p];
+    if (coef)
+        for (int m = 0; m < a->opt.M; m++)
+            coef[m] = s->group >= C2B_APPROX_MODE ? s->c[m] : 0.0;
+    if (rank)
+        *rank = s->rank;
+    return s->group;
+}
+
+double c2b_approx_residual_rms(const c2b_approx *a)
+{
+    return a && a->resid_n ? sqrt(a->resid_ss / (double)a->resid_n) : 0.0;
+}
