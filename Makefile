@@ -1,12 +1,13 @@
 # C2Blend: the two commands of the README.
 #   make demo   install Debian packages, build, blend the thesis' two cylinders
+#   make results regenerate docs/RESULTS.md (papers' solvers vs the closed form) with bench/compare
 #   make test   install Debian packages, build, run every test, then again under
 #               AddressSanitizer + UndefinedBehaviorSanitizer, then the benchmarks
 BUILD ?= build
 ASAN_BUILD ?= build-asan
 JOBS ?= 2
 
-.PHONY: all deps build demo test test-asan bench clean
+.PHONY: all deps build demo test test-asan bench results clean
 
 all: build
 
@@ -32,6 +33,9 @@ test-asan: deps
 
 bench: build
 	cd $(BUILD) && ctest -L bench --output-on-failure -V | grep -E '^[0-9]+: [|]' | sed 's/^[0-9]*: //'
+
+results: build
+	$(BUILD)/bench/compare --markdown docs/RESULTS.md
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) out
