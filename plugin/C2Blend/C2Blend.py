@@ -1,0 +1,64 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""C2Blend scripting API: curvature-continuous (G2) fillets and blends for macros.
+
+    import C2Blend
+    solid, report = C2Blend.fillet(shape, ["Edge10"], 2.0)          # Part.Solid, dict
+    face, report = C2Blend.blend(face1, edge1, face2, edge2)       # Part.Face, dict
+    report = C2Blend.check(shape, ["Edge3"])                        # dict
+
+Every function leaves its inputs unchanged and raises C2Blend.Error, whose message
+names the object and edge, when the operation cannot be done. Reports state, for every
+trimline, the worst position gap (g0), normal angle (g1, rad) and cross-direction
+normal-curvature jump (g2, absolute and relative) over 101 samples, and a verdict.
+"""
+from c2bwb.errors import C2BlendError as Error
+from c2bwb.geometry import blendfaces as _blendfaces
+from c2bwb.geometry import check as _check
+from c2bwb.geometry import fillet as _fillet
+
+__all__ = ["Error", "fillet", "fillet_report", "blend", "blend_solid", "check",
+           "format_report"]
+
+
+def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
+                  tension=1.0, label="Shape"):
+    """Fillet edges of shape with the PDE blend; returns (Part.Solid, report dict).
+
+    edges: Part.Edge objects of shape, names ('Edge3') or 1-based indices.
+    radius: rolling-ball radius (model units) fixing the trimlines.
+    continuity: 'C1', 'C2' (G2 contact, default) or 'C3'.
+    shape_params: (gamma, eta, lambda, rho); tension scales the cross derivatives.
+    """
+    return _fillet.fillet(shape, edges, float(radius), continuity,
+                          tuple(float(p) for p in shape_params), float(tension), label)
+
+
+def fillet(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0):
+    """Fillet edges of shape; returns the filleted Part.Solid (see fillet_report)."""
+    return fillet_report(shape, edges, radius, continuity, shape_params, tension)[0]
+
+
+def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1),
+          tension=1.0, report=False):
+    """G2 blend face from edge1 of face1 to edge2 of face2 (possibly different solids).
+
+    Returns a Part.Face, or (Part.Face, report dict) with report=True.
+    """
+    face, rep = _blendfaces.blend(face1, edge1, face2, edge2, continuity,
+                                  tuple(float(p) for p in shape_params), float(tension))
+    return (face, rep) if report else face
+
+
+def blend_solid(faces, where="blend"):
+    """One solid from primary faces plus blend faces, with planar caps where needed."""
+    return _blendfaces.close_solid(faces, where)
+
+
+def check(shape, edges, samples=101):
+    """Continuity report (G0/G1/G2) across edges of shape, e.g. of OCCT's own fillets."""
+    return _check.check(shape, edges, samples)
+
+
+def format_report(report):
+    """Report lines (str) for the Report view or a terminal."""
+    return "\n".join(_check.format_report(report))

@@ -1,0 +1,152 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Workbench commands (GUI only). Selection problems are reported in a message box
+and the Report view, naming the object and sub-element; the document is not touched."""
+import os
+
+import FreeCAD
+import FreeCADGui
+from PySide import QtGui
+
+from ..errors import C2BlendError
+from ..objects import animate, make
+from ..viewproviders.viewproviders import ICONS, show_curvature_map
+
+NAMES = ["C2Blend_Fillet", "C2Blend_BlendFaces", "C2Blend_Check", "C2Blend_Animate"]
+
+
+def _fail(title, ex):
+    FreeCAD.Console.PrintError("%s: %s\n" % (title, ex))
+    if FreeCADGui.getMainWindow().isVisible():
+        QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), title, str(ex))
+
+
+def _edges_of_selection():
+    """(object, [edge names]) from the selection; faces etc. are refused by name."""
+    sel = FreeCADGui.Selection.getSelectionEx()
+    if len(sel) != 1:
+        raise C2BlendError("select edges of exactly one solid (%d objects selected)" % len(sel))
+    s = sel[0]
+    bad = [n for n in s.SubElementNames if not n.startswith("Edge")]
+    if bad:
+        raise C2BlendError("%s is not an edge; select only edges" % bad[0],
+                           "%s.%s" % (s.Object.Label, bad[0]))
+    if not s.SubElementNames:
+        raise C2BlendError("no edges selected", s.Object.Label)
+    return s.Object, list(s.SubElementNames)
+
+
+class Fillet:
+    """C2 Fillet: G2 fillet of the selected edges, with a task panel."""
+
+    def GetResources(self):
+        return {"Pixmap": os.path.join(ICONS, "C2Blend_Fillet.svg"), "MenuText": "C2 Fillet",
+                "ToolTip": "Curvature-continuous (G2) fillet of the selected edges"}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        try:
+            base, edges = _edges_of_selection()
+        except C2BlendError as ex:
+            return _fail("C2 Fillet", ex)
+        from ..taskpanels.fillet_panel import FilletPanel
+        FreeCADGui.Control.showDialog(FilletPanel(base=base, edges=edges))
+
+
+class BlendFaces:
+    """C2 Blend: blend face between (face, edge) picked on one object and on another."""
+
+    def GetResources(self):
+        return {"Pixmap": os.path.join(ICONS, "C2Blend_BlendFaces.svg"),
+                "MenuText": "C2 Blend faces",
+                "ToolTip": "G2 blend between an edge of a face and an edge of another face: "
+                           "pick face and edge on the first object, then on the second"}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        sides = []
+        for s in FreeCADGui.Selection.getSelectionEx():
+            names = list(s.SubElementNames)
+            while names:
+                pair, names = names[:2], names[2:]
+                sides.append((s.Object, pair))
+        try:
+            if len(sides) != 2:
+                raise C2BlendError("pick a face and one of its edges on each side "
+                                   "(%d pairs selected)" % len(sides))
+            make.make_blend(sides[0], sides[1], make_solid=False)
+        except C2BlendError as ex:
+            _fail("C2 Blend faces", ex)
+
+
+class Check:
+    """C2 Check: continuity report of a C2Blend result or of selected edges."""
+
+    def GetResources(self):
+        return {"Pixmap": os.path.join(ICONS, "C2Blend_Check.svg"),
+                "MenuText": "Check continuity",
+                "ToolTip": "G0/G1/G2 report across the selected edges (or of a C2Blend "
+                           "result) and a curvature colour map"}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        sel = FreeCADGui.Selection.getSelectionEx()
+        try:
+            if len(sel) != 1:
+                raise C2BlendError("select one C2Blend object or edges of one object")
+            s = sel[0]
+            if s.SubElementNames:
+                bad = [n for n in s.SubElementNames if not n.startswith("Edge")]
+                if bad:
+                    raise C2BlendError("%s is not an edge" % bad[0],
+                                       "%s.%s" % (s.Object.Label, bad[0]))
+                make.make_check(s.Object, list(s.SubElementNames))
+            elif hasattr(s.Object, "Report") and s.Object.Report:
+                FreeCAD.Console.PrintMessage("%s: %s\n" % (s.Object.Label, s.Object.Verdict))
+            else:
+                raise C2BlendError("select edges, or a C2Fillet/C2Blend object",
+                                   s.Object.Label)
+            show_curvature_map(s.Object)
+        except C2BlendError as ex:
+            _fail("Check continuity", ex)
+
+
+class Animate:
+    """Animate: step the Time of a C2Clock and check the selected blends per frame."""
+
+    def GetResources(self):
+        return {"Pixmap": os.path.join(ICONS, "C2Blend_Animate.svg"), "MenuText": "Animate",
+                "ToolTip": "Select a Clock and C2Blend objects; steps Time 0..1 in 10 "
+                           "frames, checks continuity and saves PNG frames"}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        objs = [s.Object for s in FreeCADGui.Selection.getSelectionEx()]
+        clocks = [o for o in objs if hasattr(o, "Time")]
+        targets = [o for o in objs if hasattr(o, "Report") and not hasattr(o, "Time")]
+        try:
+            if len(clocks) != 1 or not targets:
+                raise C2BlendError("select one Clock (an object with a Time property) and "
+                                   "the C2Blend objects to check")
+            out = QtGui.QFileDialog.getExistingDirectory(None, "Folder for PNG frames")
+            if not out:
+                return
+            view = FreeCADGui.ActiveDocument.ActiveView
+            frames = animate.animate(FreeCAD.ActiveDocument, clocks[0],
+                                     [k / 9.0 for k in range(10)], targets, out, "brep",
+                                     snapshot=lambda p: view.saveImage(p, 800, 600, "White"))
+            for f in frames:
+                FreeCAD.Console.PrintMessage("t = %.3f: %s\n" % (f["t"], f["verdicts"]))
+        except C2BlendError as ex:
+            _fail("Animate", ex)
+
+
+for _name, _cmd in zip(NAMES, (Fillet(), BlendFaces(), Check(), Animate())):
+    FreeCADGui.addCommand(_name, _cmd)

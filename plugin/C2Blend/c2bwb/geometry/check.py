@@ -1,0 +1,137 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Continuity across edges of a shape (MATH.md section 8), from the CAD faces alone.
+
+For an edge between faces A and B, points along the edge are projected onto both
+surfaces. At each point:
+  g0 = distance between the two projections (model units);
+  g1 = angle between the oriented normals (rad);
+  g2 = |kA - kB|, the jump of the normal curvature in the direction across the edge
+       (1/model units), and g2_rel = g2 / max(|kA|, |kB|, 1/diagonal);
+  dk = the largest jump of k1, k2 (principal curvatures) and of H.
+Verdicts: G2 when g0 <= tol_g0, g1 <= tol_g1 and g2_rel <= tol_g2; G1 and G0 likewise.
+This works on any shape, including OCCT's own fillets (G1: their curvature jumps by 1/R
+across the contact edges).
+"""
+import math
+
+import Part
+
+from .surface import Frame, frame_at_point, angle
+
+TOL_G0 = 1e-6     # model units, and at least the edge tolerance
+TOL_G1 = 1e-8     # rad
+TOL_G2 = 1e-6     # relative curvature jump
+
+
+def edge_faces(shape, edge):
+    """The faces of `shape` that contain `edge` (distinct, in shape order)."""
+    out = []
+    for f in shape.ancestorsOfType(edge, Part.Face):
+        if not any(f.isSame(g) for g in out):
+            out.append(f)
+    return out
+
+
+def sample_params(edge, n):
+    """n parameters of the edge: interior points at (k + 1/2)/n, so no vertex is used
+    (at vertices a third face may intervene)."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    return [a + (b - a) * (k + 0.5) / n for k in range(n)]
+
+
+def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
+    """Continuity between faces fa and fb at (point, tangent, uv) triples on their
+    common boundary, uv being the point's parameters on fa or None (then it is
+    projected; projection onto B-spline surfaces costs milliseconds): worst g0, g1, g2, g2_rel, dk and a verdict (see the module doc).
+    oriented=False compares faces that are not yet in one shell: their normals may be
+    opposite, so fb's normal is flipped where it faces away from fa's."""
+    worst = {"g0": 0.0, "g1": 0.0, "g2": 0.0, "g2_rel": 0.0, "dk": 0.0}
+    ka_max = kb_max = 0.0
+    for p, tangent, uv in points:
+        a = frame_at_point(fa, p) if uv is None else Frame(fa, *uv)
+        b = frame_at_point(fb, a.p)
+        if not oriented and a.n.dot(b.n) < 0:
+            b.n = -b.n
+        d = a.n.cross(tangent)
+        d.normalize()
+        db = d - b.n * d.dot(b.n)
+        if db.Length < 1e-3:  # a sharp edge: no common cross direction
+            ka = kb = g2 = g2_rel = math.inf
+            pa = pb = (0.0, 0.0, 0.0, 0.0)
+        else:
+            ka, kb = a.normal_curvature(d), b.normal_curvature(db)
+            pa, pb = a.principal(), b.principal()
+            g2 = abs(ka - kb)
+            g2_rel = g2 / max(abs(ka), abs(kb), 1.0 / diag)
+        worst["g0"] = max(worst["g0"], (a.p - b.p).Length)
+        worst["g1"] = max(worst["g1"], angle(a.n, b.n))
+        worst["g2"] = max(worst["g2"], g2)
+        worst["g2_rel"] = max(worst["g2_rel"], g2_rel)
+        worst["dk"] = max(worst["dk"], abs(pa[0] - pb[0]), abs(pa[1] - pb[1]), abs(pa[3] - pb[3]))
+        ka_max, kb_max = max(ka_max, abs(ka)), max(kb_max, abs(kb))
+    if worst["g0"] > tol_g0:
+        verdict = "none"
+    elif worst["g1"] > TOL_G1:
+        verdict = "G0"
+    elif worst["g2_rel"] > TOL_G2:
+        verdict = "G1"
+    else:
+        verdict = "G2"
+    worst.update({"samples": len(points), "verdict": verdict,
+                  "cross_curvature": (ka_max, kb_max),
+                  "tolerances": {"g0": tol_g0, "g1": TOL_G1, "g2_rel": TOL_G2}})
+    return worst
+
+
+def check_edge(shape, edge, samples=101, diagonal=None):
+    """Continuity report (dict) for one edge shared by two faces of `shape`.
+
+    Raises ValueError when the edge does not have exactly two faces.
+    """
+    faces = edge_faces(shape, edge)
+    if len(faces) != 2:
+        raise ValueError("the edge has %d adjacent faces, continuity needs 2" % len(faces))
+    points = [(edge.valueAt(t), edge.tangentAt(t), None) for t in sample_params(edge, samples)]
+    return compare(faces[0], faces[1], points, diagonal or shape.BoundBox.DiagonalLength,
+                   max(TOL_G0, edge.Tolerance))
+
+
+def element_name(shape, sub, kind):
+    """FreeCAD sub-element name ('Edge3', 'Face1') of sub in shape, or '?'."""
+    subs = shape.Edges if kind == "Edge" else shape.Faces
+    for i, s in enumerate(subs):
+        if s.isSame(sub):
+            return "%s%d" % (kind, i + 1)
+    return "?"
+
+
+RANK = {"none": 0, "G0": 1, "G1": 2, "G2": 3}
+
+
+def check(shape, edges, samples=101):
+    """Continuity report for the given edges of shape.
+
+    edges: Part.Edge objects or names like 'Edge3'. Returns
+    {"edges": [{"edge": "Edge3", "faces": ["Face1", "Face2"], ...per-edge dict...}],
+     "verdict": worst verdict}.
+    """
+    out = []
+    diag = shape.BoundBox.DiagonalLength
+    for e in edges:
+        edge = shape.getElement(e) if isinstance(e, str) else e
+        rep = check_edge(shape, edge, samples, diag)
+        rep["edge"] = element_name(shape, edge, "Edge")
+        rep["faces"] = [element_name(shape, f, "Face") for f in edge_faces(shape, edge)]
+        out.append(rep)
+    verdict = min((r["verdict"] for r in out), key=RANK.get) if out else "none"
+    return {"edges": out, "verdict": verdict}
+
+
+def format_report(rep):
+    """Human-readable lines for the Report view."""
+    lines = []
+    for r in rep["edges"]:
+        lines.append("%s (%s): %s  G0 %.2e  G1 %.2e rad  curvature jump %.3g (rel %.2e)"
+                     % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g0"], r["g1"],
+                        r["g2"], r["g2_rel"]))
+    return lines

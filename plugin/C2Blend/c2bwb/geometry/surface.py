@@ -1,0 +1,90 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Differential geometry of a FreeCAD face at a point (MATH.md sections 7 and 8).
+
+Only FreeCAD, Part and the standard library are used, so this runs headless.
+Normals follow the face's orientation (outward for the faces of a valid solid).
+"""
+import math
+
+import FreeCAD
+
+Vector = FreeCAD.Vector
+
+
+class Frame:
+    """Surface derivatives of `face` at parameters (u, v).
+
+    Attributes: u, v; p (point); su, sv, suu, suv, svv (Vectors, model units);
+    n (unit normal, oriented like the face).
+    """
+
+    __slots__ = ("face", "u", "v", "p", "su", "sv", "suu", "suv", "svv", "n")
+
+    def __init__(self, face, u, v):
+        s = face.Surface
+        self.face, self.u, self.v = face, u, v
+        self.p = s.value(u, v)
+        self.su = s.getDN(u, v, 1, 0)
+        self.sv = s.getDN(u, v, 0, 1)
+        self.suu = s.getDN(u, v, 2, 0)
+        self.suv = s.getDN(u, v, 1, 1)
+        self.svv = s.getDN(u, v, 0, 2)
+        n = self.su.cross(self.sv)
+        if n.Length == 0.0:
+            raise ValueError("degenerate surface point (S_u x S_v = 0) at (%g, %g)" % (u, v))
+        n.normalize()
+        self.n = -n if face.Orientation == "Reversed" else n
+
+    def coords(self, d):
+        """(a, b) with d = a S_u + b S_v for a tangent vector d (least squares)."""
+        e, f, g = self.su.dot(self.su), self.su.dot(self.sv), self.sv.dot(self.sv)
+        p, q = d.dot(self.su), d.dot(self.sv)
+        det = e * g - f * f
+        return (g * p - f * q) / det, (e * q - f * p) / det
+
+    def second_form(self, d1, d2):
+        """II(d1, d2) = (second derivative along d1, d2) . n, for tangent vectors."""
+        a1, b1 = self.coords(d1)
+        a2, b2 = self.coords(d2)
+        big_l, big_m, big_n = self.suu.dot(self.n), self.suv.dot(self.n), self.svv.dot(self.n)
+        return a1 * a2 * big_l + (a1 * b2 + a2 * b1) * big_m + b1 * b2 * big_n
+
+    def normal_curvature(self, d):
+        """Normal curvature (1/model unit) in tangent direction d, sign from n."""
+        return self.second_form(d, d) / d.dot(d)
+
+    def third_along(self, d):
+        """Normal part of the third derivative of the surface curve
+        gamma(tau) = S(uv + tau delta + tau^2/2 eps), gamma'(0) = d, with eps chosen so
+        that gamma''(0) is normal (gamma'' = II(d, d) n). Used for C3 data."""
+        s = self.face.Surface
+        a, b = self.coords(d)
+        g2 = self.suu * (a * a) + self.suv * (2 * a * b) + self.svv * (b * b)
+        tang = g2 - self.n * g2.dot(self.n)
+        ea, eb = self.coords(tang)
+        ea, eb = -ea, -eb
+        d3 = [s.getDN(self.u, self.v, 3 - k, k) for k in range(4)]
+        g3 = d3[0] * (a ** 3) + d3[1] * (3 * a * a * b) + d3[2] * (3 * a * b * b) + d3[3] * (b ** 3)
+        mixed = (self.suu * (a * ea) + self.suv * (a * eb + b * ea) + self.svv * (b * eb)) * 3
+        return self.n * (g3 + mixed).dot(self.n)
+
+    def principal(self):
+        """(k1, k2, K, H) with k1 >= k2, signs from n (MATH.md section 8)."""
+        e, f, g = self.su.dot(self.su), self.su.dot(self.sv), self.sv.dot(self.sv)
+        big_l, big_m, big_n = self.suu.dot(self.n), self.suv.dot(self.n), self.svv.dot(self.n)
+        det = e * g - f * f
+        k = (big_l * big_n - big_m * big_m) / det
+        h = (e * big_n - 2 * f * big_m + g * big_l) / (2 * det)
+        r = math.sqrt(max(h * h - k, 0.0))
+        return h + r, h - r, k, h
+
+
+def frame_at_point(face, p):
+    """Frame of `face` at the orthogonal projection of point p onto its surface."""
+    u, v = face.Surface.parameter(p)
+    return Frame(face, u, v)
+
+
+def angle(a, b):
+    """Angle in radians between two vectors, accurate for tiny angles."""
+    return math.atan2(a.cross(b).Length, a.dot(b))

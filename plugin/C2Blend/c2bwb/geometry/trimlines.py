@@ -1,0 +1,73 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Boundary data of a blend from two CAD faces (MATH.md section 7).
+
+A blend runs from face F1 (u = 0) to face F2 (u = 1). Given corresponding trimline
+points T1(v) on F1 and T2(v) on F2, the cross-boundary rows are
+
+    S = T1,  S_u = s1 d1,  S_uu = s1^2 II1(d1, d1) N1  (,  S_uuu = s1^3 g1)
+    S = T2,  S_u = -s2 d2, S_uu = s2^2 II2(d2, d2) N2  (, S_uuu = -s2^3 g2)
+
+with d_i the unit tangent of F_i perpendicular to the trimline, pointing from F_i towards
+the blend, and s_i = tension * |T2 - T1|. These rows make the blend's tangent plane and
+second fundamental form equal to the face's along the trimline (G2) for any s_i > 0.
+"""
+import math
+
+from .surface import frame_at_point
+
+ROWS = {"C1": 2, "C2": 3, "C3": 4}
+
+
+def side_rows(face, point, tangent, towards, scale, nrows, sign):
+    """Cross-boundary rows at one trimline point.
+
+    face: the primary face; point: a point on (or within tolerance of) the trimline;
+    tangent: the trimline's tangent there; towards: any vector pointing from the face
+    into the blend (fixes the sign of d); scale: s > 0; sign: +1 for u = 0, -1 for u = 1.
+    Returns (rows, frame) with rows a list of nrows (x, y, z) tuples.
+    """
+    fr = frame_at_point(face, point)
+    d = fr.n.cross(tangent)
+    if d.Length == 0.0:
+        raise ValueError("trimline tangent is parallel to the face normal")
+    d.normalize()
+    if d.dot(towards) < 0.0:
+        d = -d
+    rows = [fr.p, d * (sign * scale)]
+    if nrows > 2:
+        rows.append(fr.n * (scale * scale * fr.normal_curvature(d)))
+    if nrows > 3:
+        rows.append(fr.third_along(d) * (sign * scale ** 3))
+    return [tuple(r) for r in rows], fr
+
+
+def v_length(rows0, rows1, periodic):
+    """Length of the v-range that makes the blend's parametrisation nearly isotropic:
+    the mean trimline length divided by the mean cross speed |S_u|. Without it a long
+    trimline mapped onto [0, 1] has steep v-modes, and the PDE pulls the blend far
+    from both faces (the modes decay like exp(-|k| u / v_length))."""
+    def length(rows):
+        pts = [r[0] for r in rows] + ([rows[0][0]] if periodic else [])
+        return sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+    speed = sum(math.hypot(*r[1]) for r in rows0 + rows1) / (len(rows0) + len(rows1))
+    return max(0.5 * (length(rows0) + length(rows1)) / speed, 1e-3)
+
+
+def spec_from_rows(rows0, rows1, continuity, shape_params, periodic, name):
+    """A C2Blend spec (dict) with sampled boundary rows.
+
+    rows0/rows1: per sample, the list of rows from side_rows. Samples are uniform in
+    v over [0, v_length] (see v_length); periodic data do not repeat the end point.
+    """
+    n = ROWS[continuity]
+    return {
+        "name": name,
+        "continuity": continuity,
+        "shape": list(shape_params),
+        "v_range": [0.0, v_length(rows0, rows1, periodic)],
+        "periodic": bool(periodic),
+        "boundary": {
+            "u0": [{"samples": [list(r[k]) for r in rows0]} for k in range(n)],
+            "u1": [{"samples": [list(r[k]) for r in rows1]} for k in range(n)],
+        },
+    }

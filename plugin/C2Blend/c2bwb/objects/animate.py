@@ -1,0 +1,65 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Animation of time-dependent blends: step a time property, recompute, verify the
+continuity of every target at every frame, and write one file per frame."""
+import json
+import os
+
+from ..errors import C2BlendError
+
+
+def write_shape(shape, path):
+    """Export shape to STEP (.step/.stp) or BREP (.brep) atomically: a temporary file in
+    the same folder is renamed over path only when complete."""
+    folder, name = os.path.split(os.path.abspath(path))
+    tmp = os.path.join(folder, ".%s.%d.tmp%s" % (name, os.getpid(), os.path.splitext(name)[1]))
+    try:
+        if path.lower().endswith(".brep"):
+            shape.exportBrep(tmp)
+        else:
+            shape.exportStep(tmp)
+        if not os.path.exists(tmp) or os.path.getsize(tmp) == 0:
+            raise OSError("nothing was written")
+        os.replace(tmp, path)
+    except Exception as ex:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise C2BlendError("cannot write %s: %s" % (path, ex), "", "io") from None
+
+
+def animate(doc, clock, times, targets, out_dir=None, fmt="step", prop="Time",
+            snapshot=None):
+    """Step clock.<prop> through times; after each recompute every target (C2Fillet or
+    C2Blend object) must be valid and report its verdict. Writes
+    out_dir/frame_NNN.<fmt> per frame, and calls snapshot(path) (GUI PNG) if given.
+    The clock is restored afterwards. Returns a list of frame dicts
+    {"t", "verdicts": {label: verdict}, "worst_g2_rel", "files"}."""
+    start = getattr(clock, prop)
+    frames = []
+    try:
+        for k, t in enumerate(times):
+            setattr(clock, prop, float(t))
+            doc.recompute()
+            frame = {"t": float(t), "verdicts": {}, "worst_g2_rel": 0.0, "worst_g1": 0.0,
+                     "files": []}
+            for obj in targets:
+                if "Invalid" in obj.State or not obj.Shape.isValid():
+                    raise C2BlendError("frame %d (t = %g) failed to recompute" % (k, t),
+                                       obj.Label, "numeric")
+                rep = json.loads(obj.Report)
+                frame["verdicts"][obj.Label] = rep["verdict"]
+                for r in rep["trimlines"]:
+                    frame["worst_g2_rel"] = max(frame["worst_g2_rel"], r["g2_rel"])
+                    frame["worst_g1"] = max(frame["worst_g1"], r["g1"])
+                if out_dir:
+                    path = os.path.join(out_dir, "%s_frame_%03d.%s" % (obj.Name, k, fmt))
+                    write_shape(obj.Shape, path)
+                    frame["files"].append(path)
+            if snapshot is not None and out_dir:
+                png = os.path.join(out_dir, "frame_%03d.png" % k)
+                snapshot(png)
+                frame["files"].append(png)
+            frames.append(frame)
+    finally:
+        setattr(clock, prop, start)
+        doc.recompute()
+    return frames

@@ -1,0 +1,175 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Parametric document objects of C2Blend (FeaturePython). Headless: no GUI imports.
+
+The class paths are stored in saved documents: never rename this module or classes.
+A failed recompute keeps the previous shape and prints the reason to the Report view.
+"""
+import json
+
+import FreeCAD
+
+from ..errors import C2BlendError
+from ..geometry import blendfaces, check as ck, fillet as fl
+
+CONTINUITIES = ["C2", "C1", "C3"]
+
+
+def _shape_props(obj):
+    """Shape parameters and tension of the blend-like object."""
+    for name, doc in (("Gamma", "gamma: shape parameter of the sixth-order PDE"),
+                      ("Eta", "eta: shape parameter of the sixth-order PDE"),
+                      ("Lambda", "lambda: shape parameter of the sixth-order PDE"),
+                      ("Rho", "rho: shape parameter of the sixth-order PDE"),
+                      ("Tension", "scale of the cross-boundary derivatives (> 0)")):
+        obj.addProperty("App::PropertyFloat", name, "Shape", doc)
+        setattr(obj, name, 1.0)
+    obj.addProperty("App::PropertyEnumeration", "Continuity", "Blend",
+                    "C1: tangent data; C2: curvature data (G2 contact); C3: plus third")
+    obj.Continuity = CONTINUITIES
+    obj.Continuity = "C2"
+    obj.addProperty("App::PropertyString", "Verdict", "Report", "worst continuity found")
+    obj.addProperty("App::PropertyString", "Report", "Report", "continuity report (JSON)")
+    obj.setEditorMode("Verdict", 1)
+    obj.setEditorMode("Report", 1)
+
+
+def params(obj):
+    """(continuity, (gamma, eta, lambda, rho), tension) of an object."""
+    return obj.Continuity, (obj.Gamma, obj.Eta, obj.Lambda, obj.Rho), obj.Tension
+
+
+def _publish(obj, rep, header):
+    obj.Report = json.dumps(rep, default=float)
+    obj.Verdict = rep["verdict"]
+    lines = [header] + ["  " + s for s in ck.format_report({"edges": rep["trimlines"]})]
+    for k in rep.get("kept_occt_faces", []):
+        lines.append("  %s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
+                     % (k["where"], k["reason"]))
+    FreeCAD.Console.PrintMessage("\n".join(lines) + "\n")
+
+
+class C2Fillet:
+    """G2 fillet of edges of a solid: Base = (object, [edge names])."""
+
+    def __init__(self, obj):
+        obj.addProperty("App::PropertyLinkSub", "Base", "Fillet", "solid and its edges")
+        obj.addProperty("App::PropertyLength", "Radius", "Fillet",
+                        "rolling-ball radius that fixes the trimlines")
+        obj.Radius = 1.0
+        _shape_props(obj)
+        obj.Proxy = self
+
+    def execute(self, obj):
+        base, subs = obj.Base
+        label = base.Label
+        try:
+            cont, sp, tension = params(obj)
+            solid, rep = fl.fillet(base.Shape, list(subs), float(obj.Radius), cont, sp,
+                                   tension, label)
+        except C2BlendError as ex:
+            self.last_error, self.last_kind = str(ex), ex.kind
+            FreeCAD.Console.PrintError("C2 Fillet %s: %s (previous shape kept)\n"
+                                       % (obj.Label, ex))
+            raise
+        self.last_error = ""
+        obj.Shape = solid
+        _publish(obj, rep, "C2 Fillet %s: %s" % (obj.Label, rep["verdict"]))
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+class C2BlendFaces:
+    """G2 blend face between Edge1 = (object, [FaceN, EdgeM]) and Edge2 likewise."""
+
+    def __init__(self, obj):
+        obj.addProperty("App::PropertyLinkSub", "Edge1", "Blend", "first face and its edge")
+        obj.addProperty("App::PropertyLinkSub", "Edge2", "Blend", "second face and its edge")
+        obj.addProperty("App::PropertyBool", "MakeSolid", "Blend",
+                        "one solid: the primaries' faces, the blend and planar caps")
+        _shape_props(obj)
+        obj.Proxy = self
+
+    @staticmethod
+    def _side(link, which):
+        o, subs = link
+        faces = [s for s in subs if s.startswith("Face")]
+        edges = [s for s in subs if s.startswith("Edge")]
+        where = "%s.%s" % (o.Label, "+".join(subs))
+        if len(faces) != 1 or len(edges) != 1:
+            raise C2BlendError("%s needs one face and one of its edges, got %s"
+                               % (which, list(subs)), where)
+        return o.Shape.getElement(faces[0]), o.Shape.getElement(edges[0]), where
+
+    def execute(self, obj):
+        try:
+            f1, e1, w1 = self._side(obj.Edge1, "Edge1")
+            f2, e2, w2 = self._side(obj.Edge2, "Edge2")
+            cont, sp, tension = params(obj)
+            face, rep = blendfaces.blend(f1, e1, f2, e2, cont, sp, tension, names=(w1, w2))
+            shape = blendfaces.close_solid([f1, face, f2], "%s -> %s" % (w1, w2)) \
+                if obj.MakeSolid else face
+        except C2BlendError as ex:
+            self.last_error, self.last_kind = str(ex), ex.kind
+            FreeCAD.Console.PrintError("C2 Blend %s: %s (previous shape kept)\n"
+                                       % (obj.Label, ex))
+            raise
+        self.last_error = ""
+        obj.Shape = shape
+        for r in rep["trimlines"]:
+            r.setdefault("edge", r["trimline"])
+            r.setdefault("faces", [])
+        _publish(obj, rep, "C2 Blend %s: %s" % (obj.Label, rep["verdict"]))
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+class C2Check:
+    """Continuity report across edges: Target = (object, [edge names])."""
+
+    def __init__(self, obj):
+        obj.addProperty("App::PropertyLinkSub", "Target", "Check", "shape and its edges")
+        obj.addProperty("App::PropertyInteger", "Samples", "Check", "points per edge")
+        obj.Samples = 101
+        obj.addProperty("App::PropertyString", "Verdict", "Report", "worst continuity found")
+        obj.addProperty("App::PropertyString", "Report", "Report", "continuity report (JSON)")
+        obj.Proxy = self
+
+    def execute(self, obj):
+        o, subs = obj.Target
+        rep = ck.check(o.Shape, list(subs), obj.Samples)
+        obj.Report = json.dumps(rep, default=float)
+        obj.Verdict = rep["verdict"]
+        FreeCAD.Console.PrintMessage("\n".join(["C2 Check %s: %s" % (o.Label, rep["verdict"])]
+                                               + ["  " + s for s in ck.format_report(rep)]) + "\n")
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+class C2Clock:
+    """A Time property for animations; bind primaries to it with expressions,
+    e.g. Cylinder.Radius = 1 + 0.2 * Clock.Time."""
+
+    def __init__(self, obj):
+        obj.addProperty("App::PropertyFloat", "Time", "Animation", "time parameter t")
+        obj.Proxy = self
+
+    def execute(self, obj):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None

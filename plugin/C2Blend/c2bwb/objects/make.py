@@ -1,0 +1,82 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Create C2Blend objects in a document. On failure the document is left as it was:
+the geometry is computed (and may fail) before anything is added, and the addition is
+one undo transaction that is aborted if the first recompute fails."""
+import FreeCAD
+
+from ..errors import C2BlendError
+from . import features
+
+if FreeCAD.GuiUp:
+    from ..viewproviders.viewproviders import ViewProviderC2
+else:
+    ViewProviderC2 = None
+
+
+def _add(doc, type_name, name, proxy_cls, setup):
+    doc.openTransaction("C2Blend: add " + name)
+    try:
+        obj = doc.addObject(type_name, name)
+        proxy_cls(obj)
+        setup(obj)
+        if ViewProviderC2 is not None:
+            ViewProviderC2(obj.ViewObject)
+        doc.recompute()
+        if "Invalid" in obj.State:
+            why = getattr(obj.Proxy, "last_error", "") or ", ".join(obj.State)
+            raise C2BlendError(why, "", getattr(obj.Proxy, "last_kind", "numeric"))
+    except Exception:
+        doc.abortTransaction()
+        doc.recompute()
+        raise
+    doc.commitTransaction()
+    return obj
+
+
+def _set_params(obj, continuity, shape_params, tension):
+    obj.Continuity = continuity
+    obj.Gamma, obj.Eta, obj.Lambda, obj.Rho = (float(p) for p in shape_params)
+    obj.Tension = float(tension)
+
+
+def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0):
+    """A C2Fillet object filleting edges (names like 'Edge3') of document object base.
+    The selection and parameters are validated before the document is touched; any
+    later failure aborts the transaction, so the document is left as it was."""
+    from ..geometry import fillet as fl
+    fl.check_params(radius, continuity, shape_params, tension, base.Label)
+    fl.resolve_edges(base.Shape, list(edges), base.Label)
+
+    def setup(obj):
+        obj.Base = (base, list(edges))
+        obj.Radius = float(radius)
+        _set_params(obj, continuity, shape_params, tension)
+        if FreeCAD.GuiUp:
+            base.ViewObject.Visibility = False
+    return _add(base.Document, "Part::FeaturePython", "C2Fillet", features.C2Fillet, setup)
+
+
+def make_blend(side1, side2, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0,
+               make_solid=False):
+    """A C2BlendFaces object; side = (object, ['FaceN', 'EdgeM'])."""
+    def setup(obj):
+        obj.Edge1, obj.Edge2 = side1, side2
+        obj.MakeSolid = bool(make_solid)
+        _set_params(obj, continuity, shape_params, tension)
+    return _add(side1[0].Document, "Part::FeaturePython", "C2Blend", features.C2BlendFaces,
+                setup)
+
+
+def make_check(target, edges, samples=101):
+    """A C2Check object reporting continuity across edges of target."""
+    def setup(obj):
+        obj.Target = (target, list(edges))
+        obj.Samples = samples
+    return _add(target.Document, "App::FeaturePython", "C2Check", features.C2Check, setup)
+
+
+def make_clock(doc, time=0.0):
+    """A C2Clock object holding the animation time."""
+    def setup(obj):
+        obj.Time = float(time)
+    return _add(doc, "App::FeaturePython", "Clock", features.C2Clock, setup)

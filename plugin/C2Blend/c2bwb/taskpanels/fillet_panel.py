@@ -1,0 +1,164 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Task panel of C2 Fillet: radius, continuity, gamma, eta, lambda, rho and tension
+with a live preview (a view decoration, so the document is not touched until OK)."""
+import math
+
+import FreeCADGui
+from PySide import QtCore, QtGui
+from pivy import coin
+
+from ..errors import C2BlendError
+from ..geometry import fillet as fl
+from ..objects import make
+
+# (name, low, high): shape parameters on a log scale (their effect grows with the
+# v-frequency of the data, so useful values span decades), tension linear
+SLIDERS = (("Gamma", 0.01, 100.0), ("Eta", 0.01, 100.0), ("Lambda", 0.01, 100.0),
+           ("Rho", 0.01, 100.0), ("Tension", 0.2, 3.0))
+
+
+class FilletPanel:
+    """Create a C2Fillet (base, edges given) or edit one (obj given)."""
+
+    def __init__(self, base=None, edges=None, obj=None):
+        self.obj, self.base, self.edges = obj, base, edges
+        if obj is not None:
+            self.base, self.edges = obj.Base[0], list(obj.Base[1])
+        self.form = QtGui.QWidget()
+        self.form.setWindowTitle("C2 Fillet")
+        lay = QtGui.QFormLayout(self.form)
+        self.radius = QtGui.QDoubleSpinBox()
+        self.radius.setRange(1e-4, 1e6)
+        self.radius.setDecimals(4)
+        self.radius.setValue(float(obj.Radius) if obj else 1.0)
+        lay.addRow("Radius", self.radius)
+        self.cont = QtGui.QComboBox()
+        self.cont.addItems(["C2", "C1", "C3"])
+        if obj:
+            self.cont.setCurrentIndex(["C2", "C1", "C3"].index(obj.Continuity))
+        lay.addRow("Continuity", self.cont)
+        self.sliders = {}
+        for name, lo, hi in SLIDERS:
+            s = QtGui.QSlider(QtCore.Qt.Horizontal)
+            s.setRange(0, 1000)
+            s.lo, s.hi = lo, hi
+            value = getattr(obj, name) if obj else 1.0
+            s.setValue(self.position(s, value))
+            label = QtGui.QLabel()
+            s.valueChanged.connect(lambda _v, s=s, label=label: label.setText("%.3f" % self.value(s)))
+            label.setText("%.3f" % self.value(s))
+            row = QtGui.QHBoxLayout()
+            row.addWidget(s)
+            row.addWidget(label)
+            lay.addRow(name, row)
+            self.sliders[name] = s
+        self.status = QtGui.QLabel()
+        self.status.setWordWrap(True)
+        lay.addRow(self.status)
+        self.preview_node = None
+        self.timer = QtCore.QTimer()
+        self.timer.setSingleShot(True)
+        self.timer.timeout.connect(self.preview)
+        for w in list(self.sliders.values()):
+            w.valueChanged.connect(lambda _v: self.timer.start(150))
+        self.radius.valueChanged.connect(lambda _v: self.timer.start(150))
+        self.cont.currentIndexChanged.connect(lambda _v: self.timer.start(150))
+        self.timer.start(10)
+
+    @staticmethod
+    def value(s):
+        """Slider position (0..1000) to parameter value."""
+        x = s.value() / 1000.0
+        if s.lo > 0 and s.hi / s.lo > 100:
+            return s.lo * (s.hi / s.lo) ** x
+        return s.lo + (s.hi - s.lo) * x
+
+    @staticmethod
+    def position(s, value):
+        """Parameter value to slider position (clamped)."""
+        if s.lo > 0 and s.hi / s.lo > 100:
+            x = math.log(max(value, s.lo) / s.lo) / math.log(s.hi / s.lo)
+        else:
+            x = (value - s.lo) / (s.hi - s.lo)
+        return int(round(1000 * min(max(x, 0.0), 1.0)))
+
+    def parameters(self):
+        v = {k: self.value(s) for k, s in self.sliders.items()}
+        return (self.radius.value(), self.cont.currentText(),
+                (v["Gamma"], v["Eta"], v["Lambda"], v["Rho"]), v["Tension"])
+
+    def preview(self):
+        """Recompute the fillet for the current values and show it in the view."""
+        radius, cont, sp, tension = self.parameters()
+        self.clear_preview()
+        try:
+            solid, rep = fl.fillet(self.base.Shape, self.edges, radius, cont, sp, tension,
+                                   self.base.Label)
+        except C2BlendError as ex:
+            self.status.setText("Cannot fillet: %s" % ex)
+            return
+        self.status.setText("%s; %d blend face(s), fit deviation %.2g, %.0f ms"
+                            % (rep["verdict"], len(rep["blends"]),
+                               max([b["fit_deviation"] for b in rep["blends"]] or [0.0]),
+                               1e3 * rep["seconds"]))
+        node = coin.SoSeparator()
+        mat = coin.SoMaterial()
+        mat.diffuseColor.setValue(0.85, 0.55, 0.2)
+        node.addChild(mat)
+        pts, tris = solid.tessellate(solid.BoundBox.DiagonalLength * 2e-3)
+        c = coin.SoCoordinate3()
+        c.point.setValues(0, len(pts), [(p.x, p.y, p.z) for p in pts])
+        node.addChild(c)
+        fs = coin.SoIndexedFaceSet()
+        idx = [i for t in tris for i in (t[0], t[1], t[2], -1)]
+        fs.coordIndex.setValues(0, len(idx), idx)
+        node.addChild(fs)
+        FreeCADGui.ActiveDocument.ActiveView.getSceneGraph().addChild(node)
+        self.preview_node = node
+
+    def clear_preview(self):
+        if self.preview_node is not None:
+            FreeCADGui.ActiveDocument.ActiveView.getSceneGraph().removeChild(self.preview_node)
+            self.preview_node = None
+
+    def accept(self):
+        self.timer.stop()
+        self.clear_preview()
+        radius, cont, sp, tension = self.parameters()
+        try:
+            if self.obj is None:
+                self.obj = make.make_fillet(self.base, self.edges, radius, cont, sp, tension)
+            else:
+                doc = self.obj.Document
+                doc.openTransaction("C2 Fillet: edit")
+                self.obj.Radius = radius
+                self.obj.Continuity = cont
+                self.obj.Gamma, self.obj.Eta, self.obj.Lambda, self.obj.Rho = sp
+                self.obj.Tension = tension
+                doc.recompute()
+                if "Invalid" in self.obj.State:
+                    doc.abortTransaction()
+                    doc.recompute()
+                    raise C2BlendError(getattr(self.obj.Proxy, "last_error", "recompute failed"),
+                                       self.obj.Label)
+                doc.commitTransaction()
+        except C2BlendError as ex:
+            QtGui.QMessageBox.critical(None, "C2 Fillet", str(ex))
+            return False
+        FreeCADGui.Control.closeDialog()
+        if self.obj is not None:
+            FreeCADGui.ActiveDocument.resetEdit()
+        return True
+
+    def reject(self):
+        self.timer.stop()
+        self.clear_preview()
+        FreeCADGui.Control.closeDialog()
+        if self.obj is not None:
+            FreeCADGui.ActiveDocument.resetEdit()
+        return True
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+
+

@@ -1,0 +1,41 @@
+"""The parts of the workbench tests, built with Part (no files)."""
+import FreeCAD
+import Part
+
+V = FreeCAD.Vector
+
+
+def box():
+    """10 x 10 x 10 box."""
+    return Part.makeBox(10, 10, 10)
+
+
+def shaft_on_plate():
+    """Cylinder r = 5, h = 20 fused on a 40 x 40 x 5 plate; returns (solid, junction edge
+    name)."""
+    plate = Part.makeBox(40, 40, 5, V(-20, -20, -5))
+    s = plate.fuse(Part.makeCylinder(5, 20)).removeSplitter()
+    for i, e in enumerate(s.Edges):
+        if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z) < 1e-9 \
+                and abs(e.Curve.Radius - 5) < 1e-9:
+            return s, "Edge%d" % (i + 1)
+    raise AssertionError("no junction edge")
+
+
+def loft():
+    """Lofted solid (B-spline side face) through circles r = 10, 6, 8 at z = 0, 10, 20;
+    returns (solid, name of the top edge between the B-spline face and the top plane)."""
+    ws = [Part.Wire(Part.makeCircle(r, V(0, 0, z))) for r, z in ((10, 0), (6, 10), (8, 20))]
+    s = Part.makeLoft(ws, True, False)
+    for i, e in enumerate(s.Edges):
+        if abs(e.Vertexes[0].Point.z - 20) < 1e-9:
+            return s, "Edge%d" % (i + 1)
+    raise AssertionError("no top edge")
+
+
+def circle_edge(shape, z):
+    """Index (0-based) of the circular edge of shape at height z."""
+    for i, e in enumerate(shape.Edges):
+        if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z - z) < 1e-9:
+            return i
+    raise AssertionError("no circle at z = %g" % z)
