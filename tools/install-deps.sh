@@ -5,7 +5,8 @@ set -eu
 PKGS="build-essential cmake pkg-config libfftw3-dev libcjson-dev libmatheval-dev
 liblapacke-dev liblapack-dev python3 python3-numpy python3-matplotlib g++
 freecad-python3 libocct-foundation-dev libocct-modeling-data-dev libtbb-dev
-libcgal-dev libeigen3-dev python3-dev python3-pytest"
+libcgal-dev libeigen3-dev python3-dev python3-pytest
+xvfb xauth"
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
