@@ -38,6 +38,8 @@ def _edges_of_selection():
 class Fillet:
     """C2 Fillet: G2 fillet of the selected edges, with a task panel."""
 
+    panel = None  # the open task panel (macros and tests drive it)
+
     def GetResources(self):
         return {"Pixmap": os.path.join(ICONS, "C2Blend_Fillet.svg"), "MenuText": "C2 Fillet",
                 "ToolTip": "Curvature-continuous (G2) fillet of the selected edges"}
@@ -51,7 +53,8 @@ class Fillet:
         except C2BlendError as ex:
             return _fail("C2 Fillet", ex)
         from ..taskpanels.fillet_panel import FilletPanel
-        FreeCADGui.Control.showDialog(FilletPanel(base=base, edges=edges))
+        Fillet.panel = FilletPanel(base=base, edges=edges)
+        FreeCADGui.Control.showDialog(Fillet.panel)
 
 
 class BlendFaces:

@@ -12,11 +12,9 @@ import Part
 
 from ..errors import C2BlendError
 from . import check as ck
-from .bspline import fit_surface
-from .fillet import check_params, data_error
+from .bspline import fit_surface, solve_sampled
+from .fillet import DATA_REL, check_params
 from .trimlines import ROWS, side_rows, spec_from_rows
-
-DATA_REL = 1e-10
 
 
 class Trimline:
@@ -89,8 +87,8 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
     align(t1, t2)
     where = "%s -> %s" % names
     nrows = ROWS[continuity]
-    n = samples
-    while True:
+
+    def rows_at(n):
         rows0, rows1 = [], []
         for k in range(n):
             s = k / n if t1.closed else k / (n - 1)
@@ -103,13 +101,14 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
                                    "a blend needs a gap" % s, where)
             rows0.append(side_rows(face1, p1, g1, t1.outward(p1, g1), scale, nrows, 1)[0])
             rows1.append(side_rows(face2, p2, g2, t2.outward(p2, g2), scale, nrows, -1)[0])
-        spec = spec_from_rows(rows0, rows1, continuity, shape_params, t1.closed,
-                              "blend " + where)
-        surface, fit, kernel = fit_surface(spec, tol_rel, where)
-        err = data_error(kernel.info())
-        if err <= DATA_REL or 2 * n > max_samples:
-            break
-        n *= 2
+        return rows0, rows1
+
+    kernel, n, err = solve_sampled(
+        rows_at, t1.closed,
+        lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, t1.closed,
+                                      "blend " + where),
+        where, samples, max_samples, DATA_REL)
+    surface, fit = fit_surface(kernel, tol_rel, where)
     face = Part.Face(surface)
     v0, v1 = surface.bounds()[2:4]
     diag = face.BoundBox.DiagonalLength

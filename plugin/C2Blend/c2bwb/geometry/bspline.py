@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""From a C2Blend spec to a FreeCAD B-spline surface, through the c2blend kernel."""
+"""From a C2Blend spec to a FreeCAD B-spline surface, through the c2blend kernel.
+Kernel errors become C2BlendError naming `where` (object and edge)."""
 import Part
 
 import c2blend
@@ -7,19 +8,58 @@ import c2blend
 from ..errors import C2BlendError
 
 
-def fit_surface(spec, tol_rel, where):
-    """Solve the blend of `spec` and fit it at tol_rel (relative to its bounding-box
-    diagonal). Returns (Part.BSplineSurface, fit dict, c2blend.Blend).
-    Kernel errors become C2BlendError naming `where`."""
+def _kernel(fn, where):
     try:
-        blend = c2blend.Blend(spec)
-        fit = blend.fit(tol=tol_rel)
+        return fn()
     except c2blend.NumericalError as ex:
-        raise C2BlendError("the blend cannot be computed: %s" % ex, where, "numeric") from ex
+        raise C2BlendError("the blend cannot be computed: %s" % ex, where, "numeric") from None
     except c2blend.Error as ex:
-        raise C2BlendError("bad blend data: %s" % ex, where, "kernel") from ex
+        raise C2BlendError("bad blend data: %s" % ex, where, "kernel") from None
+
+
+def solve(spec, where):
+    """The kernel's blend (c2blend.Blend) of a spec dict."""
+    return _kernel(lambda: c2blend.Blend(spec), where)
+
+
+def fit_surface(blend, tol_rel, where):
+    """Fit blend at tol_rel (relative to its bounding-box diagonal); returns
+    (Part.BSplineSurface, fit dict)."""
+    fit = _kernel(lambda: blend.fit(tol=tol_rel), where)
     surf = Part.BSplineSurface()
     surf.buildFromPolesMultsKnots(fit["poles"].tolist(), fit["umults"], fit["vmults"],
                                   fit["uknots"], fit["vknots"], fit["uperiodic"],
                                   fit["vperiodic"], fit["udegree"], fit["vdegree"])
-    return surf, fit, blend
+    return surf, fit
+
+
+def data_error(blend):
+    """Largest truncation error of the blend's boundary data, relative to the scale of
+    the same datum (S, S_u, ...) over the three components."""
+    info = blend.info()
+    scale = {}
+    for comp in info["components"]:
+        for bd in comp["boundary_data"]:
+            key = (bd["side"], bd["datum"])
+            scale[key] = max(scale.get(key, 0.0), bd["scale"])
+    worst = 0.0
+    for comp in info["components"]:
+        for bd in comp["boundary_data"]:
+            s = scale[(bd["side"], bd["datum"])]
+            if bd["truncation_error"] > 0.0:
+                worst = max(worst, bd["truncation_error"] / s if s > 0 else float("inf"))
+    return worst
+
+
+def solve_sampled(rows_at, closed, spec_of, where, samples, max_samples, target):
+    """Sample boundary rows (rows_at(n) -> (rows0, rows1)), doubling n from `samples`
+    until the kernel's measured data error is below `target`, stops improving (less
+    than 2x per doubling), or n reaches max_samples. Returns (blend, n, error)."""
+    n, prev = samples, None
+    while True:
+        rows0, rows1 = rows_at(n)
+        blend = solve(spec_of(rows0, rows1), where)
+        err = data_error(blend)
+        if err <= target or 2 * n > max_samples or (prev is not None and err > 0.5 * prev):
+            return blend, n, err
+        n, prev = 2 * n, err

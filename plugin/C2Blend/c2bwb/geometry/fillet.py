@@ -16,11 +16,11 @@ import Part
 
 from ..errors import C2BlendError
 from . import check as ck
-from .bspline import fit_surface
+from .bspline import fit_surface, solve_sampled
 from .rollingball import RollingBallFace, new_faces
 from .trimlines import ROWS, side_rows, spec_from_rows
 
-DATA_REL = 1e-10  # required relative truncation error of the sampled boundary data
+DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
 
 
 def resolve_edges(shape, edges, label):
@@ -91,22 +91,6 @@ def sample_rows(rbf, n, nrows, tension):
     return rows0, rows1
 
 
-def data_error(info):
-    """Largest relative truncation error of the boundary data in a blend's info()."""
-    scale = {}
-    for comp in info["components"]:
-        for bd in comp["boundary_data"]:
-            key = (bd["side"], bd["datum"])
-            scale[key] = max(scale.get(key, 0.0), bd["scale"])
-    worst = 0.0
-    for comp in info["components"]:
-        for bd in comp["boundary_data"]:
-            s = scale[(bd["side"], bd["datum"])]
-            if bd["truncation_error"] > 0.0:
-                worst = max(worst, bd["truncation_error"] / s if s > 0 else math.inf)
-    return worst
-
-
 class Blended:
     """A rolling-ball face replaced by a PDE blend: surface, face, fit and data facts."""
 
@@ -118,19 +102,15 @@ class Blended:
 
 
 def solve_face(rbf, where, continuity, shape_params, tension, tol_rel, samples, max_samples):
-    """The PDE blend replacing one rolling-ball face; samples double until the boundary
-    data are expanded to DATA_REL (or max_samples)."""
+    """The PDE blend replacing one rolling-ball face (see bspline.solve_sampled)."""
     nrows = ROWS[continuity]
-    n = samples
-    while True:
-        rows0, rows1 = sample_rows(rbf, n, nrows, tension)
-        spec = spec_from_rows(rows0, rows1, continuity, shape_params, rbf.closed,
-                              "fillet " + where)
-        surface, fit, blend = fit_surface(spec, tol_rel, where)
-        err = data_error(blend.info())
-        if err <= DATA_REL or 2 * n > max_samples:
-            return Blended(rbf, where, surface, fit, n, err)
-        n *= 2
+    blend, n, err = solve_sampled(
+        lambda k: sample_rows(rbf, k, nrows, tension), rbf.closed,
+        lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, rbf.closed,
+                                      "fillet " + where),
+        where, samples, max_samples, DATA_REL)
+    surface, fit = fit_surface(blend, tol_rel, where)
+    return Blended(rbf, where, surface, fit, n, err)
 
 
 def _replace_edges(face, swaps):
@@ -179,13 +159,11 @@ def assemble(result, blended, where):
     solid = Part.Solid(shells[0])
     if solid.Volume < 0:
         solid.reverse()
-    if not solid.isValid():
-        raise C2BlendError("the filleted solid is not valid after sewing", where, "validity")
     try:
-        solid.check(True)
+        solid.check(True)  # BRepCheck_Analyzer, as isValid(), but says what is wrong
     except Exception as ex:
-        raise C2BlendError("BRepCheck rejects the filleted solid: %s" % ex, where,
-                           "validity") from None
+        raise C2BlendError("the filleted solid is not valid after sewing (BRepCheck: %s)"
+                           % str(ex).strip(), where, "validity") from None
     return solid
 
 
@@ -270,7 +248,9 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             continue
         blended.append(solve_face(rbf, where, continuity, shape_params, tension, tol_rel,
                                   samples, max_samples))
+    t_solve = time.perf_counter()
     solid = assemble(result, blended, where_all) if blended else result
+    t_assemble = time.perf_counter()
     checks = _trimline_checks(solid, blended)
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
@@ -283,6 +263,9 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "trimlines": checks,
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
+        "stage_seconds": {"occt_fillet": t_occt, "trimlines_solve_fit": t_solve - t0 - t_occt,
+                          "sew_and_brepcheck": t_assemble - t_solve,
+                          "continuity_check": time.perf_counter() - t_assemble},
     }
     report["verdict"] = min([c["verdict"] for c in checks] + (["G1"] if kept else []),
                             key=ck.RANK.get) if (checks or kept) else "none"

@@ -50,35 +50,35 @@ def colour(x):
     return (max(0.0, 2 * x - 1), 1.0 - abs(2 * x - 1), max(0.0, 1 - 2 * x))
 
 
-def curvature_map(shape, quantity="mean", deflection=None):
+def curvature_map(shape, quantity="kmax", deflection=None):
     """Coin node drawing shape's faces coloured by curvature at each tessellation
-    vertex (mean H, gaussian K, k1 or k2 from the analytic surfaces). Returns
-    (node, (lo, hi)) with the colour range used (symmetric percentiles)."""
+    vertex, from the analytic surfaces: 'kmax' (largest |principal curvature|, the
+    default: it is continuous across a G2 joint and jumps across a G1 one), 'mean' or
+    'gauss'. Returns (node, (lo, hi)): blue is lo, red is hi (98th percentile)."""
     deflection = deflection or shape.BoundBox.DiagonalLength * 1e-3
     coords, idx, vals = [], [], []
-    pick = {"k1": 0, "k2": 1, "gauss": 2, "mean": 3}[quantity]
     for face in shape.Faces:
         pts, tris = face.tessellate(deflection)
         base = len(coords)
         for p in pts:
             u, v = face.Surface.parameter(p)
             try:
-                vals.append(Frame(face, u, v).principal()[pick])
+                k1, k2, k, h = Frame(face, u, v).principal()
             except ValueError:
-                vals.append(0.0)
+                k1 = k2 = k = h = 0.0
+            vals.append({"kmax": max(abs(k1), abs(k2)), "mean": h, "gauss": k}[quantity])
             coords.append((p.x, p.y, p.z))
         for t in tris:
             idx.extend([base + t[0], base + t[1], base + t[2], -1])
     s = sorted(abs(v) for v in vals) or [1.0]
     hi = s[min(len(s) - 1, int(0.98 * len(s)))] or 1.0
+    lo = 0.0 if quantity == "kmax" else -hi
     node = coin.SoSeparator()
     hints = coin.SoShapeHints()
     hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE
     node.addChild(hints)
-    offset = coin.SoPolygonOffset()
-    node.addChild(offset)
     mat = coin.SoMaterial()
-    mat.diffuseColor.setValues(0, len(vals), [colour(0.5 + 0.5 * v / hi) for v in vals])
+    mat.diffuseColor.setValues(0, len(vals), [colour((v - lo) / (hi - lo)) for v in vals])
     node.addChild(mat)
     bind = coin.SoMaterialBinding()
     bind.value = coin.SoMaterialBinding.PER_VERTEX_INDEXED
@@ -90,24 +90,37 @@ def curvature_map(shape, quantity="mean", deflection=None):
     fs.coordIndex.setValues(0, len(idx), idx)
     fs.materialIndex.setValues(0, len(idx), idx)
     node.addChild(fs)
-    return node, (-hi, hi)
+    return node, (lo, hi)
 
 
-def show_curvature_map(obj, quantity="mean"):
-    """Overlay obj's curvature map in the 3D view (replacing a previous one); returns
-    the colour range. The map is a view decoration, not part of the document."""
+MAP_NAME = "C2BlendCurvatureMap"
+
+
+def show_curvature_map(obj, quantity="kmax"):
+    """Show obj's curvature map in its place in the 3D view (obj is hidden while the map
+    is shown; replaces a previous map); returns the colour range. The map is a view
+    decoration, not part of the document."""
     hide_curvature_map(obj)
     node, rng = curvature_map(obj.Shape, quantity)
-    node.setName("C2BlendCurvatureMap")
-    obj.ViewObject.RootNode.addChild(node)
-    FreeCAD.Console.PrintMessage("C2Blend: %s curvature map of %s, blue %.3g .. red %.3g\n"
-                                 % (quantity, obj.Label, rng[0], rng[1]))
+    node.setName(MAP_NAME + "_" + obj.Name)
+    FreeCADGui.ActiveDocument.ActiveView.getSceneGraph().addChild(node)
+    obj.ViewObject.Visibility = False
+    FreeCAD.Console.PrintMessage("C2Blend: %s curvature map of %s, blue %.3g .. red %.3g "
+                                 "(1/model unit)\n" % (quantity, obj.Label, rng[0], rng[1]))
     return rng
 
 
+def curvature_map_shown(obj):
+    """Whether obj's curvature map is in the scene."""
+    sg = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
+    return any(sg.getChild(i).getName() == MAP_NAME + "_" + obj.Name
+               for i in range(sg.getNumChildren()))
+
+
 def hide_curvature_map(obj):
-    """Remove the curvature map overlay of obj, if any."""
-    root = obj.ViewObject.RootNode
-    for i in reversed(range(root.getNumChildren())):
-        if root.getChild(i).getName() == "C2BlendCurvatureMap":
-            root.removeChild(i)
+    """Remove obj's curvature map, if any, and show obj again."""
+    sg = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
+    for i in reversed(range(sg.getNumChildren())):
+        if sg.getChild(i).getName() == MAP_NAME + "_" + obj.Name:
+            sg.removeChild(i)
+            obj.ViewObject.Visibility = True

@@ -1,0 +1,31 @@
+#!/bin/sh
+# GUI test: real FreeCAD under Xvfb with the workbench installed in a temporary user
+# Mod folder. Usage: run_gui.sh MODULE_DIR OUT_DIR. Fails unless the fillet is G2, the
+# curvature map is shown and the screenshot is not blank.
+set -eu
+MODDIR=$1
+OUT=$2
+HERE=$(cd "$(dirname "$0")" && pwd)
+SRC=$(cd "$HERE/../../.." && pwd)
+mkdir -p "$OUT"
+HOME=$(mktemp -d)
+export HOME
+trap 'rm -rf "$HOME"' EXIT
+MOD="$HOME/.local/share/FreeCAD/Mod/C2Blend"
+mkdir -p "$MOD"
+for f in "$SRC"/plugin/C2Blend/*; do ln -s "$f" "$MOD/"; done
+ln -s "$MODDIR"/c2blend*.so "$MOD/"
+rm -f "$OUT/gui_result.json"
+C2B_GUI_OUT=$OUT C2B_GUI_TESTS=$SRC/tests/freecad QTWEBENGINE_DISABLE_SANDBOX=1 \
+  timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$HERE/gui_fillet.py" \
+  > "$OUT/gui_log.txt" 2>&1 || true
+cat "$OUT/gui_result.json"
+/usr/bin/python3 - "$OUT/gui_result.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["ok"], r.get("error")
+assert r["verdict"] == "G2" and r["valid"], r
+assert r["map_nodes"] == 1, r
+assert r["non_white_fraction"] > 0.05 and r["colours"] > 50, r
+print("gui test: G2 fillet, curvature map shown, screenshot not blank")
+PY
