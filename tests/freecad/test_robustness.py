@@ -1,0 +1,111 @@
+"""FreeCAD robustness (issue 7): the workbench's operations driven with bad selections and
+bad parameters. After each, the document's object list and every shape (BREP text hash
+and volume) must be unchanged, and the error must name the object and sub-element."""
+import hashlib
+import math
+
+import FreeCAD
+import Part
+import pytest
+
+import shapes
+from c2bwb.errors import C2BlendError
+from c2bwb.objects import make
+
+
+def state(doc):
+    out = []
+    for o in doc.Objects:
+        sh = getattr(o, "Shape", None)
+        out.append((o.Name, o.Label,
+                    hashlib.sha1(sh.exportBrepToString().encode()).hexdigest() if sh else None,
+                    round(sh.Volume, 9) if sh and sh.Solids else None))
+    return out
+
+
+@pytest.fixture
+def doc():
+    d = FreeCAD.newDocument("Robust")
+    d.UndoMode = 1
+    box = d.addObject("Part::Box", "Box")
+    box.Length = box.Width = box.Height = 10
+    s, _ = shapes.shaft_on_plate()
+    sp = d.addObject("Part::Feature", "ShaftPlate")
+    sp.Shape = s
+    sheet = d.addObject("Part::Feature", "Sheet")
+    sheet.Shape = Part.makeBox(10, 10, 10).Faces[0]
+    d.recompute()
+    yield d
+    FreeCAD.closeDocument(d.Name)
+
+
+BAD_FILLETS = [
+    # (object, edges, radius, kwargs, message fragment)
+    ("Box", ["Face2"], 2.0, {}, r"Box\.Face2: Face2 is not an edge"),
+    ("Box", ["Vertex1"], 2.0, {}, r"Box\.Vertex1: Vertex1 is not an edge"),
+    ("Box", ["Edge99"], 2.0, {}, r"Box\.Edge99: no such edge \(the shape has 12 edges\)"),
+    ("Box", [], 2.0, {}, r"Box: no edges given"),
+    ("Sheet", ["Edge1"], 1.0, {}, r"Sheet\.Edge1: the edge has 1 adjacent face"),
+    ("Box", ["Edge1"], -1.0, {}, r"Box: radius must be a positive number, got -1\.0"),
+    ("Box", ["Edge1"], math.nan, {}, r"Box: radius must be a positive number"),
+    ("Box", ["Edge1"], math.inf, {}, r"Box: radius must be a positive number"),
+    ("Box", ["Edge1"], 0.0, {}, r"Box: radius must be a positive number"),
+    ("Box", ["Edge1"], 20.0, {}, r"Box\.Edge1: OCCT's rolling-ball fillet of radius 20 failed"),
+    ("Box", ["Edge1"], 2.0, {"continuity": "C9"}, r"Box: continuity must be C1, C2 or C3"),
+    ("Box", ["Edge1"], 2.0, {"tension": 0.0}, r"Box: tension must be a positive number"),
+    ("Box", ["Edge1"], 2.0, {"tension": math.nan}, r"Box: tension must be a positive number"),
+    ("Box", ["Edge1"], 2.0, {"shape_params": (1, 1, 1)},
+     r"Box: shape_params must be 4 finite numbers"),
+    ("Box", ["Edge1"], 2.0, {"shape_params": (1, math.inf, 1, 1)},
+     r"Box: shape_params must be 4 finite numbers"),
+    ("Box", ["Edge1", "Edge2", "Edge3"], 6.0, {}, r"Box\.Edge1, Box\.Edge2, Box\.Edge3: "),
+]
+
+
+@pytest.mark.parametrize("name,edges,radius,kw,fragment", BAD_FILLETS)
+def test_bad_fillet_leaves_document_unchanged(doc, name, edges, radius, kw, fragment):
+    before = state(doc)
+    undo = doc.UndoCount
+    with pytest.raises(C2BlendError, match=fragment):
+        make.make_fillet(doc.getObject(name), edges, radius, **kw)
+    assert state(doc) == before
+    assert doc.UndoCount == undo  # no transaction was left behind
+
+
+BAD_BLENDS = [
+    ((("Box", ["Face1"])), ("ShaftPlate", ["Face1", "Edge1"]), r"Edge1 needs one face and one of its edges"),
+    ((("Box", ["Face1", "Edge5"])), ("ShaftPlate", ["Face1", "Edge1"]), r"Box\.Face1\+Edge5: the edge is not an edge of the selected face"),
+]
+
+
+@pytest.mark.parametrize("side1,side2,fragment", BAD_BLENDS)
+def test_bad_blend_leaves_document_unchanged(doc, side1, side2, fragment):
+    before = state(doc)
+    s1 = (doc.getObject(side1[0]), side1[1])
+    s2 = (doc.getObject(side2[0]), side2[1])
+    with pytest.raises(C2BlendError, match=fragment):
+        make.make_blend(s1, s2)
+    assert state(doc) == before
+
+
+def test_failed_recompute_keeps_shape_and_undo_redo(doc):
+    box = doc.getObject("Box")
+    f = make.make_fillet(box, ["Edge1"], 2.0)
+    good = state(doc)
+    f.Radius = 30.0
+    doc.recompute()
+    assert "Invalid" in f.State and "too large" in f.Proxy.last_error
+    assert [x for x in state(doc) if x[0] == f.Name] == [x for x in good if x[0] == f.Name]
+    f.Radius = 2.0
+    doc.recompute()
+    assert state(doc) == good
+    name = f.Name
+    for _ in range(doc.UndoCount):  # back past the creation (one transaction)
+        if name not in [o.Name for o in doc.Objects]:
+            break
+        doc.undo()
+    assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet"]
+    doc.redo()
+    doc.recompute()
+    assert doc.getObject(name).Shape.isValid()
+    assert doc.getObject(name).Verdict == "G2"
