@@ -55,6 +55,8 @@ try:
     result["colours"] = len(colours)
     from c2bwb.viewproviders.viewproviders import curvature_map_shown
     result["map_nodes"] = int(curvature_map_shown(fillet))
+    from c2bwb.geometry import cgalcheck
+    result["cgal_tool"] = cgalcheck.find_tool()
     result["ok"] = True
 except Exception:
     result["error"] = traceback.format_exc()

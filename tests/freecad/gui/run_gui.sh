@@ -1,10 +1,11 @@
 #!/bin/sh
 # GUI test: real FreeCAD under Xvfb with the workbench installed in a temporary user
-# Mod folder. Usage: run_gui.sh MODULE_DIR OUT_DIR. Fails unless the fillet is G2, the
+# Mod folder. Usage: run_gui.sh MODULE_DIR OUT_DIR [CGAL_TOOL]. Fails unless the fillet is G2, the
 # curvature map is shown and the screenshot is not blank.
 set -eu
 MODDIR=$1
 OUT=$2
+export C2B_CGAL_TOOL="${3:-}"
 HERE=$(cd "$(dirname "$0")" && pwd)
 SRC=$(cd "$HERE/../../.." && pwd)
 mkdir -p "$OUT"
@@ -29,3 +30,6 @@ assert r["map_nodes"] == 1, r
 assert r["non_white_fraction"] > 0.05 and r["colours"] > 50, r
 print("gui test: G2 fillet, curvature map shown, screenshot not blank")
 PY
+if [ -n "$C2B_CGAL_TOOL" ]; then
+  grep "CGAL jet fit vs analytic, blend faces" "$OUT/gui_log.txt"
+fi

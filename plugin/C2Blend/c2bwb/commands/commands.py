@@ -111,12 +111,40 @@ class Check:
                 make.make_check(s.Object, list(s.SubElementNames))
             elif hasattr(s.Object, "Report") and s.Object.Report:
                 FreeCAD.Console.PrintMessage("%s: %s\n" % (s.Object.Label, s.Object.Verdict))
+                _cgal_cross_check(s.Object)
             else:
                 raise C2BlendError("select edges, or a C2Fillet/C2Blend object",
                                    s.Object.Label)
             show_curvature_map(s.Object)
         except C2BlendError as ex:
             _fail("Check continuity", ex)
+
+
+def _cgal_cross_check(obj):
+    """CGAL jet-fitting estimate against the analytic curvature of obj's blend faces,
+    printed to the Report view (skipped, with a note, when the tool is not installed)."""
+    import json
+    from ..geometry import cgalcheck
+    rep = json.loads(obj.Report)
+    names = sorted({r["blend_face"] for r in rep.get("trimlines", []) if "blend_face" in r})
+    if not names:
+        return
+    others = sorted({r["faces"][1] for r in rep["trimlines"]})
+    summary = cgalcheck.cross_check(obj.Shape, [obj.Shape.getElement(n) for n in names],
+                                    [obj.Shape.getElement(n) for n in others])
+    if summary is None:
+        FreeCAD.Console.PrintMessage("  CGAL cross-check skipped: %s not found\n" % cgalcheck.TOOL)
+    elif "error" in summary:
+        FreeCAD.Console.PrintWarning("  CGAL cross-check failed: %s\n" % summary["error"])
+    else:
+        for name, reg in summary["regions"].items():
+            sm = reg["smooth"]
+            if sm["count"]:
+                FreeCAD.Console.PrintMessage(
+                    "  CGAL jet fit vs analytic, %s faces (%d vertices): mean |dk1| %.3g, "
+                    "mean |dk2| %.3g, max %.3g\n"
+                    % (name, sm["count"], sm["k1"]["mean_abs"], sm["k2"]["mean_abs"],
+                       max(sm["k1"]["max_abs"], sm["k2"]["max_abs"])))
 
 
 class Animate:

@@ -196,6 +196,7 @@ def _trimline_checks(solid, blended):
             r["faces"] = [ck.element_name(solid, face, "Face"),
                           ck.element_name(solid, nbrs[0], "Face")]
             r["blend"] = b.where
+            r["blend_face"] = r["faces"][0]
             out.append(r)
     return out
 
