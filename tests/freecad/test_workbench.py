@@ -290,3 +290,19 @@ def test_occt_fillet_reports_g1_jump():
     s, edge = shapes.shaft_on_plate()
     rep, _ = occt_jump(s, [edge], 2.5)
     assert all(abs(r["g2"] - 0.4) < 1e-9 and r["g1"] < 1e-8 for r in rep["edges"])
+
+
+def test_four_parallel_edges_and_a_corner():
+    """Four vertical box edges: four G2 blends sharing the top and bottom faces. Two
+    edges meeting at a vertex: OCCT's corner patch is kept and the report says G1."""
+    box = shapes.box()
+    vertical = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
+                if abs(e.tangentAt(e.FirstParameter).z) > 0.99]
+    solid, rep = C2Blend.fillet_report(box, vertical, 2.0, label="Box")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 4 and len(rep["trimlines"]) == 8
+    solid, rep = C2Blend.fillet_report(box, ["Edge1", "Edge2"], 2.0, label="Box")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and rep["kept_occt_faces"] and not rep["blends"]
+    assert all("corner" in k["reason"] or "fillet" in k["reason"] for k in rep["kept_occt_faces"])

@@ -172,7 +172,7 @@ class Animate:
             view = FreeCADGui.ActiveDocument.ActiveView
             frames = animate.animate(FreeCAD.ActiveDocument, clocks[0],
                                      [k / 9.0 for k in range(10)], targets, out, "brep",
-                                     snapshot=lambda p: view.saveImage(p, 800, 600, "White"))
+                                     snapshot=lambda p: animate.save_view_png(view, p))
             for f in frames:
                 FreeCAD.Console.PrintMessage("t = %.3f: %s\n" % (f["t"], f["verdicts"]))
         except C2BlendError as ex:

@@ -26,6 +26,16 @@ def write_shape(shape, path):
         raise C2BlendError("cannot write %s: %s" % (path, ex), "", "io") from None
 
 
+def save_view_png(view, path, width=800, height=600):
+    """Save a 3D view as PNG atomically (temporary file in the same folder, renamed)."""
+    folder, name = os.path.split(os.path.abspath(path))
+    tmp = os.path.join(folder, ".%s.%d.tmp.png" % (name, os.getpid()))
+    view.saveImage(tmp, width, height, "White")
+    if not os.path.exists(tmp) or os.path.getsize(tmp) == 0:
+        raise C2BlendError("cannot write %s: the view was not saved" % path, "", "io")
+    os.replace(tmp, path)
+
+
 def animate(doc, clock, times, targets, out_dir=None, fmt="step", prop="Time",
             snapshot=None):
     """Step clock.<prop> through times; after each recompute every target (C2Fillet or
