@@ -250,7 +250,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         blended.append(solve_face(rbf, where, continuity, shape_params, tension, tol_rel,
                                   samples, max_samples))
     t_solve = time.perf_counter()
-    solid = assemble(result, blended, where_all) if blended else result
+    solid = assemble(result, blended, where_all) if blended else (
+        result.Solids[0] if len(result.Solids) == 1 else result)
     t_assemble = time.perf_counter()
     checks = _trimline_checks(solid, blended)
     report = {
