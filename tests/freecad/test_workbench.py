@@ -306,3 +306,28 @@ def test_four_parallel_edges_and_a_corner():
     assert_valid(solid)
     assert rep["verdict"] == "G1" and rep["kept_occt_faces"] and not rep["blends"]
     assert all("corner" in k["reason"] or "fillet" in k["reason"] for k in rep["kept_occt_faces"])
+
+
+def test_animation_driven_by_a_spreadsheet(tmp_path):
+    """The time may also be a spreadsheet cell bound by expressions."""
+    doc = FreeCAD.newDocument("AnimSheet")
+    sheet = doc.addObject("Spreadsheet::Sheet", "Params")
+    sheet.set("A1", "0")
+    sheet.setAlias("A1", "time")  # not "t": that is the unit tonne
+    a = doc.addObject("Part::Cylinder", "A")
+    a.Height = 2.0
+    a.setExpression("Radius", "1 + 0.3 * Params.time")
+    b = doc.addObject("Part::Cylinder", "B")
+    b.Radius, b.Height = 0.8, 2.0
+    b.Placement.Base = V(0, 0, 3)
+    doc.recompute()
+    blend = make.make_blend((a, ["Face1", "Edge%d" % (shapes.circle_edge(a.Shape, 2) + 1)]),
+                            (b, ["Face1", "Edge%d" % (shapes.circle_edge(b.Shape, 3) + 1)]))
+    frames = animate.animate(doc, sheet, [0.0, 0.5, 1.0], [blend], str(tmp_path), "brep",
+                             prop="time")
+    assert [f["verdicts"]["C2Blend"] for f in frames] == ["G2"] * 3
+    # the blend starts on the moving cylinder: its widest point is that radius
+    widths = [Part.read(f["files"][0]).optimalBoundingBox().XMax for f in frames]
+    assert widths == pytest.approx([1.0, 1.15, 1.3], abs=1e-6)
+    assert a.Radius.Value == pytest.approx(1.0)  # the time was restored
+    FreeCAD.closeDocument(doc.Name)

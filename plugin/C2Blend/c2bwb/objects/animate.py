@@ -36,18 +36,35 @@ def save_view_png(view, path, width=800, height=600):
     os.replace(tmp, path)
 
 
+def _get_time(clock, prop):
+    if clock.TypeId == "Spreadsheet::Sheet":
+        cell = clock.getCellFromAlias(prop) or prop
+        return clock.getContents(cell)
+    return getattr(clock, prop)
+
+
+def _set_time(clock, prop, value):
+    if clock.TypeId == "Spreadsheet::Sheet":  # prop is an alias (e.g. "time") or a cell
+        cell = clock.getCellFromAlias(prop) or prop
+        clock.set(cell, value if isinstance(value, str) else repr(float(value)))
+        clock.recompute()
+    else:
+        setattr(clock, prop, value)
+
+
 def animate(doc, clock, times, targets, out_dir=None, fmt="step", prop="Time",
             snapshot=None):
-    """Step clock.<prop> through times; after each recompute every target (C2Fillet or
+    """Step clock.<prop> through times (clock: an object with a float property such as a
+    C2Clock's Time, or a spreadsheet with prop an alias or cell, e.g. "time"); after each recompute every target (C2Fillet or
     C2Blend object) must be valid and report its verdict. Writes
     out_dir/frame_NNN.<fmt> per frame, and calls snapshot(path) (GUI PNG) if given.
     The clock is restored afterwards. Returns a list of frame dicts
     {"t", "verdicts": {label: verdict}, "worst_g2_rel", "files"}."""
-    start = getattr(clock, prop)
+    start = _get_time(clock, prop)
     frames = []
     try:
         for k, t in enumerate(times):
-            setattr(clock, prop, float(t))
+            _set_time(clock, prop, float(t))
             doc.recompute()
             frame = {"t": float(t), "verdicts": {}, "worst_g2_rel": 0.0, "worst_g1": 0.0,
                      "files": []}
@@ -70,6 +87,6 @@ def animate(doc, clock, times, targets, out_dir=None, fmt="step", prop="Time",
                 frame["files"].append(png)
             frames.append(frame)
     finally:
-        setattr(clock, prop, start)
+        _set_time(clock, prop, start)
         doc.recompute()
     return frames
