@@ -331,3 +331,22 @@ def test_animation_driven_by_a_spreadsheet(tmp_path):
     assert widths == pytest.approx([1.0, 1.15, 1.3], abs=1e-6)
     assert a.Radius.Value == pytest.approx(1.0)  # the time was restored
     FreeCAD.closeDocument(doc.Name)
+
+
+def test_saved_document_reopens_and_recomputes(tmp_path):
+    """The feature's class path is stored in the FCStd file; reopened, it recomputes."""
+    doc = FreeCAD.newDocument("Saved")
+    box = doc.addObject("Part::Box", "Box")
+    doc.recompute()
+    make.make_fillet(box, ["Edge1"], 2.0)
+    path = str(tmp_path / "saved.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    f = doc.getObject("C2Fillet")
+    assert type(f.Proxy).__name__ == "C2Fillet" and f.Verdict == "G2"
+    f.Radius = 3.0
+    doc.recompute()
+    assert "Invalid" not in f.State and f.Verdict == "G2"
+    assert_valid(f.Shape)
+    FreeCAD.closeDocument(doc.Name)

@@ -20,6 +20,19 @@ def _fail(title, ex):
         QtGui.QMessageBox.warning(FreeCADGui.getMainWindow(), title, str(ex))
 
 
+class _Command:
+    """Resources from ICON, MENU and TIP; active when a document is open."""
+
+    ICON = MENU = TIP = ""
+
+    def GetResources(self):
+        return {"Pixmap": os.path.join(ICONS, self.ICON), "MenuText": self.MENU,
+                "ToolTip": self.TIP}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+
 def _edges_of_selection():
     """(object, [edge names]) from the selection; faces etc. are refused by name."""
     sel = FreeCADGui.Selection.getSelectionEx()
@@ -35,17 +48,12 @@ def _edges_of_selection():
     return s.Object, list(s.SubElementNames)
 
 
-class Fillet:
+class Fillet(_Command):
     """C2 Fillet: G2 fillet of the selected edges, with a task panel."""
 
+    ICON, MENU = "C2Blend_Fillet.svg", "C2 Fillet"
+    TIP = "Curvature-continuous (G2) fillet of the selected edges"
     panel = None  # the open task panel (macros and tests drive it)
-
-    def GetResources(self):
-        return {"Pixmap": os.path.join(ICONS, "C2Blend_Fillet.svg"), "MenuText": "C2 Fillet",
-                "ToolTip": "Curvature-continuous (G2) fillet of the selected edges"}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None
 
     def Activated(self):
         try:
@@ -57,17 +65,12 @@ class Fillet:
         FreeCADGui.Control.showDialog(Fillet.panel)
 
 
-class BlendFaces:
+class BlendFaces(_Command):
     """C2 Blend: blend face between (face, edge) picked on one object and on another."""
 
-    def GetResources(self):
-        return {"Pixmap": os.path.join(ICONS, "C2Blend_BlendFaces.svg"),
-                "MenuText": "C2 Blend faces",
-                "ToolTip": "G2 blend between an edge of a face and an edge of another face: "
-                           "pick face and edge on the first object, then on the second"}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None
+    ICON, MENU = "C2Blend_BlendFaces.svg", "C2 Blend faces"
+    TIP = ("G2 blend between an edge of a face and an edge of another face: pick face and "
+           "edge on the first object, then on the second")
 
     def Activated(self):
         sides = []
@@ -85,17 +88,12 @@ class BlendFaces:
             _fail("C2 Blend faces", ex)
 
 
-class Check:
+class Check(_Command):
     """C2 Check: continuity report of a C2Blend result or of selected edges."""
 
-    def GetResources(self):
-        return {"Pixmap": os.path.join(ICONS, "C2Blend_Check.svg"),
-                "MenuText": "Check continuity",
-                "ToolTip": "G0/G1/G2 report across the selected edges (or of a C2Blend "
-                           "result) and a curvature colour map"}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None
+    ICON, MENU = "C2Blend_Check.svg", "Check continuity"
+    TIP = ("G0/G1/G2 report across the selected edges (or of a C2Blend result), a curvature "
+           "colour map, and the CGAL cross-check when the tool is installed")
 
     def Activated(self):
         sel = FreeCADGui.Selection.getSelectionEx()
@@ -147,16 +145,12 @@ def _cgal_cross_check(obj):
                        max(sm["k1"]["max_abs"], sm["k2"]["max_abs"])))
 
 
-class Animate:
+class Animate(_Command):
     """Animate: step the Time of a C2Clock and check the selected blends per frame."""
 
-    def GetResources(self):
-        return {"Pixmap": os.path.join(ICONS, "C2Blend_Animate.svg"), "MenuText": "Animate",
-                "ToolTip": "Select a Clock and C2Blend objects; steps Time 0..1 in 10 "
-                           "frames, checks continuity and saves PNG frames"}
-
-    def IsActive(self):
-        return FreeCAD.ActiveDocument is not None
+    ICON, MENU = "C2Blend_Animate.svg", "Animate"
+    TIP = ("Select a Clock and C2Blend objects; steps Time 0..1 in 10 frames, checks "
+           "continuity and saves PNG frames")
 
     def Activated(self):
         objs = [s.Object for s in FreeCADGui.Selection.getSelectionEx()]

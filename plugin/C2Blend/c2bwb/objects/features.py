@@ -48,7 +48,32 @@ def _publish(obj, rep, header):
     FreeCAD.Console.PrintMessage("\n".join(lines) + "\n")
 
 
-class C2Fillet:
+class _Proxy:
+    """Proxy state is the document's properties only: nothing extra to save."""
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+    def update(self, obj, title, compute):
+        """obj.Shape and report from compute() -> (shape, report). On C2BlendError the
+        previous shape is kept, the reason is printed and kept in last_error, and the
+        error propagates (FreeCAD marks the object invalid)."""
+        try:
+            shape, rep = compute()
+        except C2BlendError as ex:
+            self.last_error, self.last_kind = str(ex), ex.kind
+            FreeCAD.Console.PrintError("%s %s: %s (previous shape kept)\n"
+                                       % (title, obj.Label, ex))
+            raise
+        self.last_error = ""
+        obj.Shape = shape
+        _publish(obj, rep, "%s %s: %s" % (title, obj.Label, rep["verdict"]))
+
+
+class C2Fillet(_Proxy):
     """G2 fillet of edges of a solid: Base = (object, [edge names])."""
 
     def __init__(self, obj):
@@ -61,28 +86,12 @@ class C2Fillet:
 
     def execute(self, obj):
         base, subs = obj.Base
-        label = base.Label
-        try:
-            cont, sp, tension = params(obj)
-            solid, rep = fl.fillet(base.Shape, list(subs), float(obj.Radius), cont, sp,
-                                   tension, label)
-        except C2BlendError as ex:
-            self.last_error, self.last_kind = str(ex), ex.kind
-            FreeCAD.Console.PrintError("C2 Fillet %s: %s (previous shape kept)\n"
-                                       % (obj.Label, ex))
-            raise
-        self.last_error = ""
-        obj.Shape = solid
-        _publish(obj, rep, "C2 Fillet %s: %s" % (obj.Label, rep["verdict"]))
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
+        cont, sp, tension = params(obj)
+        self.update(obj, "C2 Fillet", lambda: fl.fillet(
+            base.Shape, list(subs), float(obj.Radius), cont, sp, tension, base.Label))
 
 
-class C2BlendFaces:
+class C2BlendFaces(_Proxy):
     """G2 blend face between Edge1 = (object, [FaceN, EdgeM]) and Edge2 likewise."""
 
     def __init__(self, obj):
@@ -105,33 +114,22 @@ class C2BlendFaces:
         return o.Shape.getElement(faces[0]), o.Shape.getElement(edges[0]), where
 
     def execute(self, obj):
-        try:
-            f1, e1, w1 = self._side(obj.Edge1, "Edge1")
-            f2, e2, w2 = self._side(obj.Edge2, "Edge2")
-            cont, sp, tension = params(obj)
-            face, rep = blendfaces.blend(f1, e1, f2, e2, cont, sp, tension, names=(w1, w2))
-            shape = blendfaces.close_solid([f1, face, f2], "%s -> %s" % (w1, w2)) \
-                if obj.MakeSolid else face
-        except C2BlendError as ex:
-            self.last_error, self.last_kind = str(ex), ex.kind
-            FreeCAD.Console.PrintError("C2 Blend %s: %s (previous shape kept)\n"
-                                       % (obj.Label, ex))
-            raise
-        self.last_error = ""
-        obj.Shape = shape
+        self.update(obj, "C2 Blend", lambda: self.compute(obj))
+
+    def compute(self, obj):
+        f1, e1, w1 = self._side(obj.Edge1, "Edge1")
+        f2, e2, w2 = self._side(obj.Edge2, "Edge2")
+        cont, sp, tension = params(obj)
+        face, rep = blendfaces.blend(f1, e1, f2, e2, cont, sp, tension, names=(w1, w2))
+        shape = blendfaces.close_solid([f1, face, f2], "%s -> %s" % (w1, w2)) \
+            if obj.MakeSolid else face
         for r in rep["trimlines"]:
             r.setdefault("edge", r["trimline"])
             r.setdefault("faces", [])
-        _publish(obj, rep, "C2 Blend %s: %s" % (obj.Label, rep["verdict"]))
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
+        return shape, rep
 
 
-class C2Check:
+class C2Check(_Proxy):
     """Continuity report across edges: Target = (object, [edge names])."""
 
     def __init__(self, obj):
@@ -150,14 +148,8 @@ class C2Check:
         FreeCAD.Console.PrintMessage("\n".join(["C2 Check %s: %s" % (o.Label, rep["verdict"])]
                                                + ["  " + s for s in ck.format_report(rep)]) + "\n")
 
-    def dumps(self):
-        return None
 
-    def loads(self, state):
-        return None
-
-
-class C2Clock:
+class C2Clock(_Proxy):
     """A Time property for animations; bind primaries to it with expressions,
     e.g. Cylinder.Radius = 1 + 0.2 * Clock.Time."""
 
@@ -166,10 +158,4 @@ class C2Clock:
         obj.Proxy = self
 
     def execute(self, obj):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
         return None
