@@ -7,7 +7,8 @@
  *  1. thesis Table 3 (eqs. 127-129, t = 0.1) and Table 1 (eqs. 87-88, t = 0.2) analogues:
  *     thesis-approx at M = 10, 15, 20 against the exact closed form, errors E1-E4
  *     (thesis section 3.3.2.1) on 101 x 101 vertices, times at 51^2 .. 201^2 vertices;
- *  2. seed 001 section 3: pseudo-Navier (M = N = 3, 49 points) against the closed form,
+ *  2. seed 001 section 3: pseudo-Navier (M = N = 3, 49 points), the Fourier-series method
+ *     (eqs. 20-21) and the pseudo-spectral method (eqs. 22-23) against the closed form,
  *     error eq. 24 on 100 x 100 points;
  *  3. speed and accuracy ratios exact vs thesis-approx M = 20 against an independent
  *     Chebyshev-collocation reference (tests/oracle), and frames per second of a
@@ -21,6 +22,7 @@
 #include "approx_examples.h"
 #include "c2b_atomic.h"
 #include "cheb_bvp.h"
+#include <lapacke.h>
 
 typedef struct out {
     FILE *md; /* may be NULL */
@@ -188,10 +190,12 @@ static int seed001_table(out *o)
     ex_linspace(NS, 0, 2 * C2B_PI, v);
     c2b_blend_eval_grid(bf, NS, u, NS, v, 0, ref, &err);
     c2b_blend_eval_grid(b1, NS, u, NS, v, 0, part, &err);
-    emit(o, "\n### Seed 001, section 3: pseudo-Navier against the closed form (eqs. 17-19)\n\n");
+    emit(o, "\n### Seed 001, section 3: pseudo-Navier, Fourier series and pseudo-spectral against the closed form (eqs. 17-23)\n\n");
     emit(o, "x = closed form of the first-group data (a0 + a1 v, -r cos v) + pseudo-Navier for a2 e^v "
             "(eq. 18); reference: C2Blend's closed form of all of eq. 17 (eq. 19). Error eq. 24 on "
-            "100 x 100 points (u_i = i/99, v_j = 2 pi j/99). Shape b = 1, c = 18, d = 81.\n\n");
+            "100 x 100 points (u_i = i/99, v_j = 2 pi j/99). Shape b = 1, c = 18, d = 81. The Fourier-series "
+            "rows solve the N-term Fourier series of the data (eq. 20) mode by mode; the pseudo-spectral rows add "
+            "the remainder of eq. 22 (docs/APPROX.md).\n\n");
     emit(o, "| method | settings | E (eq. 24), ours | E, seed 001 | solve time (us), ours |\n|---|---|---|---|---|\n");
     struct { int M, N, ci, grid; const char *what; double pub; } cases[] = {
         {3, 3, 6, C2B_NAVIER_GRID_INTERIOR, "M = N = 3, 7 x 7 interior points", 6.637916e-4},
@@ -234,8 +238,71 @@ static int seed001_table(out *o)
         c2b_blend_destroy(b);
     }
     emit(o, "| closed form (C2Blend) | all of eq. 17 | 0 (reference) | 0 | %.3g |\n", 1e6 * median(t, g_reps));
-    emit(o, "| pseudo-spectral | N = 2 / N = 5 | not implemented | 5.845711e-02 / 6.294766e-02 | — |\n");
-    emit(o, "| Fourier series | N = 20 / N = 100 | not implemented | 6.565263e-02 / 6.513351e-02 | — |\n");
+    static const int NF[2] = {20, 100};
+    static const double pubF[2] = {6.565263e-2, 6.513351e-2};
+    for (int k = 0; k < 2; k++) {
+        static ex_fourier_problem fq;
+        ex_fourier_init(&fq, NF[k]);
+        c2b_blend *bq = NULL;
+        double tq[64];
+        c2b_status st = C2B_OK;
+        for (int r = 0; r < g_reps; r++) {
+            c2b_blend_destroy(bq);
+            bq = NULL;
+            double t0 = now();
+            st = c2b_blend_create(&fq.pb, &bq, &err);
+            tq[r] = now() - t0;
+        }
+        if (st) {
+            emit(o, "| Fourier series (eqs. 20-21) | N = %d | fails: %s | %.6e | — |\n", NF[k], err.msg, pubF[k]);
+            continue;
+        }
+        c2b_blend_eval_grid(bq, NS, u, NS, v, 0, app, &err);
+        emit(o, "| Fourier series (eqs. 20-21, modes solved exactly) | N = %d | %.6e | %.6e | %.3g |\n", NF[k],
+             ex_seed001_error(NS * NS, app, ref), pubF[k], 1e6 * median(tq, g_reps));
+        c2b_blend_destroy(bq);
+    }
+    /* pseudo-spectral (eqs. 22-23): the N-term Fourier solution plus the remainder
+     * r1 e^{wu} + r2 u e^{wu} + r3 e^{-wu} + r4 u e^{-wu} that restores S and S_u at u = 0, 1
+     * at every v; w = a (N + 1) with a = 3 (Bloor and Wilson's choice; seed 001 gives no w) */
+    static const int NP[2] = {2, 5};
+    static const double pubP[2] = {5.845711e-2, 6.294766e-2};
+    for (int k = 0; k < 2; k++) {
+        static ex_fourier_problem fq;
+        ex_fourier_init(&fq, NP[k]);
+        c2b_blend *bq = NULL;
+        if (c2b_blend_create(&fq.pb, &bq, &err)) {
+            emit(o, "| pseudo-spectral (eqs. 22-23) | N = %d | fails: %s | %.6e | — |\n", NP[k], err.msg, pubP[k]);
+            continue;
+        }
+        double w = 3.0 * (NP[k] + 1), ub[2] = {0, 1};
+        static double db[2 * NS * 3 * 3], dt[2 * NS * 3 * 3];
+        c2b_blend_eval_grid(bq, 2, ub, NS, v, 1, db, &err);  /* Fourier solution at the ends */
+        c2b_blend_eval_grid(bf, 2, ub, NS, v, 1, dt, &err);  /* the true data (closed form meets them) */
+        c2b_blend_eval_grid(bq, NS, u, NS, v, 0, app, &err);
+        for (int j = 0; j < NS; j++)
+            for (int c = 0; c < 3; c++) {
+                /* rows: R(0), R_u(0), R(1), R_u(1); unknowns r1..r4 */
+                double ew = exp(w), em = exp(-w);
+                double A[16] = {1, 0, 1, 0, w, 1, -w, 1, ew, ew, em, em, w * ew, ew + w * ew, -w * em, em - w * em};
+                double rhs[4];
+                for (int side = 0; side < 2; side++)
+                    for (int p = 0; p < 2; p++) {
+                        size_t idx = (((size_t)side * NS + j) * 3 + (p ? 1 : 0)) * 3 + c;
+                        rhs[2 * side + p] = dt[idx] - db[idx];
+                    }
+                lapack_int piv[4];
+                if (LAPACKE_dgesv(LAPACK_ROW_MAJOR, 4, 1, A, 4, piv, rhs, 1))
+                    return 1;
+                for (int i = 0; i < NS; i++) {
+                    double eu = exp(w * u[i]), ed = exp(-w * u[i]);
+                    app[((size_t)i * NS + j) * 3 + c] += rhs[0] * eu + rhs[1] * u[i] * eu + rhs[2] * ed + rhs[3] * u[i] * ed;
+                }
+            }
+        emit(o, "| pseudo-spectral (eqs. 22-23, w = 3 (N + 1)) | N = %d | %.6e | %.6e | — |\n", NP[k],
+             ex_seed001_error(NS * NS, app, ref), pubP[k]);
+        c2b_blend_destroy(bq);
+    }
     c2b_blend_destroy(bf);
     c2b_blend_destroy(b1);
     c2b_spec_destroy(full);

@@ -225,4 +225,50 @@ static inline void ex_seed001_init(ex_seed001 *s)
     s->dom.v0 = 0, s->dom.v1 = 2 * C2B_PI, s->dom.periodic = 0;
 }
 
+/* ---- seed 001 eq. 20-21: the Fourier-series method (Bloor and Wilson) ----
+ * Data of eq. 17 with v and e^v replaced by their N-term Fourier series on [0, 2 pi]
+ * (eq. 20); every mode is then solved exactly by the kernel (eq. 21). */
+typedef struct ex_fourier { double c0, c1, c2, r; int N, kind; } ex_fourier;
+static inline double ex_fourier_fn(void *ctx, double v, double t)
+{
+    const ex_fourier *f = ctx;
+    (void)t;
+    switch (f->kind) {
+    case 1: return -f->r * cos(v);
+    case 2: return f->r * sin(v);
+    case 3: return f->c0;
+    default: break;
+    }
+    double sv = C2B_PI, se = 0.5;
+    for (int n = 1; n <= f->N; n++) {
+        sv -= 2.0 / n * sin(n * v);
+        se += (cos(n * v) - n * sin(n * v)) / (1.0 + (double)n * n);
+    }
+    return f->c0 + f->c1 * sv + f->c2 * (exp(2 * C2B_PI) - 1) / C2B_PI * se;
+}
+
+typedef struct ex_fourier_problem { ex_fourier f[3][2][2]; c2b_problem pb; } ex_fourier_problem;
+
+static inline void ex_fourier_init(ex_fourier_problem *q, int N)
+{
+    memset(q, 0, sizeof *q);
+    q->pb = c2b_problem_default();
+    q->pb.continuity = C2B_C1;
+    for (int c = 0; c < 3; c++)
+        q->pb.shape[c][0] = 1, q->pb.shape[c][1] = 18, q->pb.shape[c][2] = 81;
+    q->pb.dom.v0 = 0, q->pb.dom.v1 = 2 * C2B_PI, q->pb.dom.periodic = 1;
+    ex_fourier x0 = {-0.5, 0.158, 1.02e-4, 1, N, 0}, y0 = {1.5, -0.477, 0, 1, N, 0};
+    ex_fourier x1 = {0, 0, 0, 1, N, 1}, y1 = {0, 0, 0, 1, N, 2};
+    ex_fourier z00 = {2, 0, 0, 0, N, 3}, z01 = {-2, 0, 0, 0, N, 3}, z10 = {0, 0, 0, 0, N, 3}, z11 = {-2, 0, 0, 0, N, 3};
+    q->f[0][0][0] = x0, q->f[0][1][0] = x1, q->f[1][0][0] = y0, q->f[1][1][0] = y1;
+    q->f[2][0][0] = z00, q->f[2][0][1] = z01, q->f[2][1][0] = z10, q->f[2][1][1] = z11;
+    for (int c = 0; c < 3; c++)
+        for (int side = 0; side < 2; side++)
+            for (int p = 0; p < 2; p++)
+                if (c == 2 || p == 0) {
+                    c2b_bfunc b = {ex_fourier_fn, NULL, &q->f[c][side][p], 0, NULL, 0, 0, "seed 001 eq. 20"};
+                    q->pb.data[c][side][p] = b;
+                }
+}
+
 #endif
