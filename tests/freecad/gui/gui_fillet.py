@@ -57,6 +57,37 @@ try:
     result["map_nodes"] = int(curvature_map_shown(fillet))
     from c2bwb.geometry import cgalcheck
     result["cgal_tool"] = cgalcheck.find_tool()
+    # C2 Blend faces through the command (face + edge picked on each cylinder), driven
+    # by a Clock; then Animate writes 10 PNG frames (the folder dialog is answered here)
+    from c2bwb.objects import make
+    doc2 = FreeCAD.newDocument("Cylinders")
+    clock = make.make_clock(doc2)
+    a = doc2.addObject("Part::Cylinder", "A")
+    a.Height = 2.0
+    a.setExpression("Radius", "1 + 0.3 * Clock.Time")
+    b = doc2.addObject("Part::Cylinder", "B")
+    b.Radius, b.Height = 0.8, 2.0
+    b.Placement.Base = FreeCAD.Vector(0, 0, 3)
+    doc2.recompute()
+    FreeCADGui.Selection.clearSelection()
+    for obj, z in ((a, 2.0), (b, 3.0)):
+        FreeCADGui.Selection.addSelection(obj, "Face1")
+        FreeCADGui.Selection.addSelection(obj, "Edge%d" % (shapes.circle_edge(obj.Shape, z) + 1))
+    FreeCADGui.runCommand("C2Blend_BlendFaces")
+    blend = doc2.getObject("C2Blend")
+    result["blend_verdict"] = blend.Verdict if blend else None
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(clock)
+    FreeCADGui.Selection.addSelection(blend)
+    frames = os.path.join(OUT, "frames")
+    os.makedirs(frames, exist_ok=True)
+    QtGui.QFileDialog.getExistingDirectory = staticmethod(lambda *args, **kw: frames)
+    FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
+    FreeCADGui.SendMsgToActiveView("ViewFit")
+    FreeCADGui.runCommand("C2Blend_Animate")
+    pngs = sorted(p for p in os.listdir(frames) if p.endswith(".png"))
+    result["png_frames"] = len(pngs)
+    result["png_sizes_ok"] = all(os.path.getsize(os.path.join(frames, p)) > 1000 for p in pngs)
     result["ok"] = True
 except Exception:
     result["error"] = traceback.format_exc()

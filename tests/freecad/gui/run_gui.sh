@@ -28,7 +28,10 @@ assert r["ok"], r.get("error")
 assert r["verdict"] == "G2" and r["valid"], r
 assert r["map_nodes"] == 1, r
 assert r["non_white_fraction"] > 0.05 and r["colours"] > 50, r
-print("gui test: G2 fillet, curvature map shown, screenshot not blank")
+assert r["blend_verdict"] == "G2", r
+assert r["png_frames"] == 10 and r["png_sizes_ok"], r
+print("gui test: G2 fillet, curvature map shown, screenshot not blank; G2 blend faces; "
+      "10 PNG animation frames")
 PY
 if [ -n "$C2B_CGAL_TOOL" ]; then
   grep "CGAL jet fit vs analytic, blend faces" "$OUT/gui_log.txt"

@@ -163,6 +163,7 @@ class Animate(_Command):
             out = QtGui.QFileDialog.getExistingDirectory(None, "Folder for PNG frames")
             if not out:
                 return
+            FreeCADGui.Selection.clearSelection()  # no selection highlight in the frames
             view = FreeCADGui.ActiveDocument.ActiveView
             frames = animate.animate(FreeCAD.ActiveDocument, clocks[0],
                                      [k / 9.0 for k in range(10)], targets, out, "brep",
