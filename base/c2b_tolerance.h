@@ -10,6 +10,15 @@
 extern "C" {
 #endif
 
+/** Boundary data given as functions (expressions, NURBS) whose expansion still has a
+ *  truncation error above this fraction of the data scale when tol.max_samples is
+ *  reached are not represented at all (typically a mode frequency far beyond what
+ *  max_samples can resolve, or aliased onto the sampling grid): the blend reports
+ *  C2B_ERR_LIMIT instead of silently missing its boundary data. Aliased data give
+ *  errors of order 1; a kink (seed001_eq29) leaves 2.3e-5. Sampled data are exempt
+ *  (their leave-half-out error also measures noise). */
+#define C2B_UNRESOLVED_REL 1e-2
+
 typedef struct c2b_tolerances {
     /** Exponents closer than this (absolute, in 1/unit-u) share a divided-difference
      *  cluster. The blend's u-interval has length 1, so within a cluster

@@ -353,9 +353,19 @@ static c2b_status project_datum(const c2b_blend *b, const c2b_bfunc *bf, double 
                                 c2b_vseries *out, c2b_error *err)
 {
     c2b_status st;
-    if (bf->fn)
+    if (bf->fn) {
         st = c2b_vseries_project(&b->pb.dom, bf->fn, bf->fn_vv, bf->ctx, t, &b->pb.tol, out,
                                  err);
+        if (!st && out->err_abs > C2B_UNRESOLVED_REL * out->scale &&
+            out->err_abs > b->pb.tol.truncation_rel * out->scale) {
+            st = c2b_error_set(err, C2B_ERR_LIMIT,
+                               "not resolved with %d samples (tolerance max_samples): truncation "
+                               "error %.3g of the data scale %.3g at t=%g; the data vary faster "
+                               "(a huge mode frequency) than the samples can represent",
+                               out->n_samples, out->err_abs, out->scale, t);
+            c2b_vseries_clear(out);
+        }
+    }
     else if (bf->samples)
         st = c2b_vseries_project_samples(&b->pb.dom, bf->samples, bf->stride ? bf->stride : 1,
                                          bf->n_samples, &b->pb.tol, out, err);

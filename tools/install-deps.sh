@@ -6,6 +6,7 @@ PKGS="build-essential cmake pkg-config libfftw3-dev libcjson-dev libmatheval-dev
 liblapacke-dev liblapack-dev python3 python3-numpy python3-matplotlib g++
 freecad-python3 libocct-foundation-dev libocct-modeling-data-dev libtbb-dev
 libcgal-dev libeigen3-dev python3-dev python3-pytest
+clang libclang-rt-14-dev valgrind
 xvfb xauth"
 missing=""
 for p in $PKGS; do
