@@ -50,7 +50,7 @@ fuzz: deps
 valgrind: deps
 	cmake -S . -B $(VG_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DC2B_BUILD_BENCH=OFF
 	cmake --build $(VG_BUILD) -j$(JOBS) --target c2blend test_mode test_spec test_vseries \
-	      test_nurbs test_curv test_quadric test_check
+	      test_nurbs test_curv test_check
 	sh tests/valgrind/run.sh $(VG_BUILD)
 
 bench: build
