@@ -54,10 +54,10 @@ BAD_FILLETS = [
     ("Box", ["Edge1"], 2.0, {"continuity": "C9"}, r"Box: continuity must be C1, C2 or C3"),
     ("Box", ["Edge1"], 2.0, {"tension": 0.0}, r"Box: tension must be a positive number"),
     ("Box", ["Edge1"], 2.0, {"tension": math.nan}, r"Box: tension must be a positive number"),
-    ("Box", ["Edge1"], 2.0, {"shape_params": (1, 1, 1)},
-     r"Box: shape_params must be 4 finite numbers"),
+    ("Box", ["Edge1"], 2.0, {"shape_params": (2, 1, 1)},
+     r"Box: shape_params: C2 takes 4 shape parameters \(gamma, eta, lambda, rho\), got 3"),
     ("Box", ["Edge1"], 2.0, {"shape_params": (1, math.inf, 1, 1)},
-     r"Box: shape_params must be 4 finite numbers"),
+     r"Box: shape_params: shape parameters must be finite"),
     ("Box", ["Edge1", "Edge2", "Edge3"], 6.0, {}, r"Box\.Edge1, Box\.Edge2, Box\.Edge3: "),
 ]
 

@@ -350,3 +350,20 @@ def test_saved_document_reopens_and_recomputes(tmp_path):
     assert "Invalid" not in f.State and f.Verdict == "G2"
     assert_valid(f.Shape)
     FreeCAD.closeDocument(doc.Name)
+
+
+def test_c1_and_c3_fillets():
+    """C1 data match tangents only: the check must find the curvature jump (G1), which
+    shows it can fail on our own blends. C3 data add the third derivative: G2 or better."""
+    s, edge = shapes.shaft_on_plate()
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, continuity="C1")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1"
+    assert all(r["g1"] < 1e-8 for r in rep["trimlines"])
+    assert max(r["g2_rel"] for r in rep["trimlines"]) > 1e-2
+    box = shapes.box()
+    solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, continuity="C3")
+    assert_valid(solid)
+    assert_g2(rep)
+    with pytest.raises(C2BlendError, match=r"C3 takes 5 shape parameters \(a0, a1, a2, a3, a4\)"):
+        C2Blend.fillet(s, [edge], 2.0, continuity="C3", shape_params=(2, 1, 1, 1))

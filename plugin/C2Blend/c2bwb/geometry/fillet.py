@@ -18,7 +18,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .rollingball import RollingBallFace, new_faces
-from .trimlines import ROWS, side_rows, spec_from_rows
+from .trimlines import ROWS, shape_for, side_rows, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
 
@@ -66,9 +66,10 @@ def check_params(radius, continuity, shape_params, tension, label):
                            "radius")
     if continuity not in ROWS:
         raise C2BlendError("continuity must be C1, C2 or C3, got %r" % (continuity,), label)
-    if len(shape_params) != 4 or not all(math.isfinite(float(p)) for p in shape_params):
-        raise C2BlendError("shape_params must be 4 finite numbers (gamma, eta, lambda, rho), "
-                           "got %r" % (tuple(shape_params),), label)
+    try:
+        shape_for(continuity, shape_params)
+    except (TypeError, ValueError) as ex:
+        raise C2BlendError("shape_params: %s" % ex, label) from None
     if not (math.isfinite(tension) and tension > 0):
         raise C2BlendError("tension must be a positive number, got %r" % (tension,), label)
 
@@ -218,13 +219,15 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
 
     edges: Part.Edge objects of shape, 'EdgeN' names or 1-based indices.
     continuity: 'C1', 'C2' or 'C3' (rows of cross-boundary data matched).
-    shape_params: (gamma, eta, lambda, rho); tension scales the cross derivatives.
+    shape_params: (gamma, eta, lambda, rho) for C2, (b, c, d) for C1, (a0..a4) for C3;
+    all ones (the default) fits any continuity. tension scales the cross derivatives.
     tol_rel: B-spline fit tolerance relative to each blend's bounding-box diagonal.
     Returns (Part.Solid, report dict). Raises C2BlendError naming `label` and the edge.
     The input shape is not modified.
     """
     t0 = time.perf_counter()
     check_params(radius, continuity, shape_params, tension, label)
+    shape_params = shape_for(continuity, shape_params)
     names = resolve_edges(shape, edges, label)
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     try:

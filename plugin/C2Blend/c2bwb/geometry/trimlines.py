@@ -16,6 +16,25 @@ import math
 from .surface import frame_at_point
 
 ROWS = {"C1": 2, "C2": 3, "C3": 4}
+# the PDE's shape parameters per continuity (README "What the kernel computes")
+SHAPE_NAMES = {"C1": ("b", "c", "d"), "C2": ("gamma", "eta", "lambda", "rho"),
+               "C3": ("a0", "a1", "a2", "a3", "a4")}
+
+
+def shape_for(continuity, shape_params):
+    """The shape parameters for continuity: as given when their number fits; all ones
+    (the default of any length) becomes all ones of the right length. Raises
+    ValueError naming the expected parameters otherwise."""
+    names = SHAPE_NAMES[continuity]
+    values = tuple(float(p) for p in shape_params)
+    if not all(math.isfinite(p) for p in values):
+        raise ValueError("shape parameters must be finite, got %r" % (values,))
+    if len(values) == len(names):
+        return values
+    if values and all(p == 1.0 for p in values):
+        return (1.0,) * len(names)
+    raise ValueError("%s takes %d shape parameters (%s), got %d"
+                     % (continuity, len(names), ", ".join(names), len(values)))
 
 
 def side_rows(face, point, tangent, towards, scale, nrows, sign):

@@ -34,8 +34,11 @@ def _shape_props(obj):
 
 
 def params(obj):
-    """(continuity, (gamma, eta, lambda, rho), tension) of an object."""
-    return obj.Continuity, (obj.Gamma, obj.Eta, obj.Lambda, obj.Rho), obj.Tension
+    """(continuity, shape parameters, tension) of an object. C2 uses (Gamma, Eta, Lambda,
+    Rho); C1 (b, c, d) = (Gamma, Eta, Lambda); C3 (a0..a4) = (Gamma, Eta, Lambda, Rho, 1)."""
+    sp = (obj.Gamma, obj.Eta, obj.Lambda, obj.Rho)
+    sp = {"C1": sp[:3], "C2": sp, "C3": sp + (1.0,)}[obj.Continuity]
+    return obj.Continuity, sp, obj.Tension
 
 
 def _publish(obj, rep, header):
