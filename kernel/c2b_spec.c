@@ -9,6 +9,7 @@
 #include "c2b_expr.h"
 #include "c2b_nurbs.h"
 #include "c2b_nurbs_json.h"
+#include "c2b_odesurf.h"
 
 #define MAX_CONSTANTS 256
 #define LABEL_LEN 96
@@ -33,6 +34,9 @@ typedef struct datum {
     c2b_expr *e;     /* function of (u,) v, t */
     c2b_expr *evv;   /* its second v-derivative, derived on first use */
     int evv_failed;
+    c2b_expr *ev[C2B_VDATA_MAX_K + 1]; /* d^k e/dv^k, k >= 1, made by c2b_spec_vdata() */
+    int vkind;       /* c2b_spec_vdata: 0 symbolic up to kmax, 1 e'' = 0, 2 e'' = vbeta e */
+    double vbeta;
     double u;        /* trim parameter (ignored for boundary expressions) */
     double sign;
     double *samples; /* owned, 3 per row */
@@ -53,6 +57,9 @@ struct c2b_spec {
     double cvalues[MAX_CONSTANTS];
     int nconst;
     char name[128];
+    c2b_spec_solver solver;           /* "solver", "M", "N", "collocation", "approach" */
+    c2b_expr *curve[6][C2B_NCOMP];    /* "curves": c1, c4, controls[0..3] */
+    c2b_odesurf *odesurf;             /* owns the data contexts of a "curves" spec */
 };
 
 /* d^order/dcross^order d^dv/dalong^dv of a NURBS primary at blend parameter v. */
@@ -105,6 +112,8 @@ void c2b_spec_destroy(c2b_spec *s)
             for (int p = 0; p < C2B_MAX_N; p++) {
                 c2b_expr_destroy(s->data[c][side][p].e);
                 c2b_expr_destroy(s->data[c][side][p].evv);
+                for (int k = 0; k <= C2B_VDATA_MAX_K; k++)
+                    c2b_expr_destroy(s->data[c][side][p].ev[k]);
                 free(s->data[c][side][p].samples);
             }
         c2b_expr_destroy(s->force[c].e);
@@ -119,6 +128,10 @@ void c2b_spec_destroy(c2b_spec *s)
     }
     for (int i = 0; i < s->nconst; i++)
         free(s->cnames[i]);
+    for (int k = 0; k < 6; k++)
+        for (int c = 0; c < C2B_NCOMP; c++)
+            c2b_expr_destroy(s->curve[k][c]);
+    c2b_odesurf_destroy(s->odesurf);
     free(s);
 }
 
@@ -587,13 +600,154 @@ static c2b_status parse_force(c2b_spec *s, const cJSON *j, c2b_error *err)
     return C2B_OK;
 }
 
+
+/* "solver", "M", "N", "collocation", "approach" (docs/APPROX.md). */
+static c2b_status parse_solver(c2b_spec *s, const cJSON *root, c2b_error *err)
+{
+    const cJSON *j = cJSON_GetObjectItemCaseSensitive(root, "solver");
+    memset(&s->solver, 0, sizeof s->solver);
+    if (j) {
+        if (!cJSON_IsString(j))
+            return c2b_error_set(err, C2B_ERR_SPEC, "solver: expected \"exact\", \"thesis-approx\" or \"pseudo-navier\"");
+        if (!strcmp(j->valuestring, "exact"))
+            s->solver.kind = C2B_SOLVER_EXACT;
+        else if (!strcmp(j->valuestring, "thesis-approx"))
+            s->solver.kind = C2B_SOLVER_THESIS_APPROX;
+        else if (!strcmp(j->valuestring, "pseudo-navier"))
+            s->solver.kind = C2B_SOLVER_PSEUDO_NAVIER;
+        else
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "solver: '%s' is not one of exact, thesis-approx, pseudo-navier", j->valuestring);
+    }
+    static const char *const ints[] = {"M", "N"};
+    int *dst[2] = {&s->solver.M, &s->solver.N};
+    for (int k = 0; k < 2; k++) {
+        j = cJSON_GetObjectItemCaseSensitive(root, ints[k]);
+        if (!j)
+            continue;
+        if (!cJSON_IsNumber(j) || j->valuedouble != floor(j->valuedouble) || j->valuedouble < 1 ||
+            j->valuedouble > 1024)
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an integer in 1..1024", ints[k]);
+        *dst[k] = (int)j->valuedouble;
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "collocation");
+    if (j) {
+        double ij[2];
+        c2b_status st = want_numbers(j, "collocation", 2, ij, err);
+        if (st)
+            return st;
+        if (ij[0] != floor(ij[0]) || ij[1] != floor(ij[1]) || ij[0] < 1 || ij[1] < 1 || ij[0] > 10000 ||
+            ij[1] > 10000)
+            return c2b_error_set(err, C2B_ERR_SPEC, "collocation: expected [I, J], integers in 1..10000");
+        s->solver.ci = (int)ij[0], s->solver.cj = (int)ij[1];
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "approach");
+    if (j) {
+        if (!cJSON_IsString(j) || (strcmp(j->valuestring, "differential") && strcmp(j->valuestring, "decomposition")))
+            return c2b_error_set(err, C2B_ERR_SPEC, "approach: expected \"differential\" or \"decomposition\"");
+        s->solver.approach = !strcmp(j->valuestring, "decomposition");
+    }
+    if (s->solver.kind == C2B_SOLVER_EXACT &&
+        (s->solver.M || s->solver.N || s->solver.ci || cJSON_GetObjectItemCaseSensitive(root, "approach")))
+        return c2b_error_set(err, C2B_ERR_SPEC, "M/N/collocation/approach: only valid with an approximate \"solver\"");
+    return C2B_OK;
+}
+
+static double curve_fn(void *ctx, double v, double t) { return c2b_expr_eval(ctx, 0.0, v, t); }
+
+/* Three expressions in v, t into s->curve[k]; *out gets the curve. */
+static c2b_status parse_curve(c2b_spec *s, const cJSON *j, const char *where, int k, c2b_curve *out,
+                              c2b_error *err)
+{
+    if (!cJSON_IsArray(j) || cJSON_GetArraySize(j) != 3)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected 3 expressions [x, y, z] in v and t", where);
+    memset(out, 0, sizeof *out);
+    int c = 0;
+    for (const cJSON *x = j->child; x; x = x->next, c++) {
+        char f[LABEL_LEN];
+        snprintf(f, sizeof f, "%s[%d]", where, c);
+        c2b_status st = make_expr(s, x, f, C2B_EXPR_V | C2B_EXPR_T, &s->curve[k][c], err);
+        if (st)
+            return st;
+        out->fn[c] = curve_fn;
+        out->ctx[c] = s->curve[k][c];
+        out->time_dependent |= c2b_expr_depends(s->curve[k][c], 't');
+    }
+    return C2B_OK;
+}
+
+/* Seed 000 surfaces: "curves": {"c1": [...], "c4": [...], "w": [w1..w4]} or
+ * {"c1", "c4", "controls": [{"u": u2, "curve": [...]}, x 4]} (c2b_odesurf.h). */
+static c2b_status parse_curves(c2b_spec *s, const cJSON *j, c2b_error *err)
+{
+    if (!cJSON_IsObject(j))
+        return c2b_error_set(err, C2B_ERR_SPEC, "curves: expected an object");
+    static const char *const keys[] = {"c1", "c4", "w", "controls", NULL};
+    c2b_status st = check_keys(j, "curves", keys, err);
+    if (st)
+        return st;
+    if (s->pb.continuity != C2B_ODE)
+        return c2b_error_set(err, C2B_ERR_SPEC, "curves: needs \"continuity\": \"ODE\" (seed 000 eq. 2)");
+    if (s->solver.kind != C2B_SOLVER_EXACT)
+        return c2b_error_set(err, C2B_ERR_SPEC, "solver: 'curves' surfaces are solved exactly; remove \"solver\"");
+    c2b_odesurf_input in;
+    memset(&in, 0, sizeof in);
+    const cJSON *c1 = cJSON_GetObjectItemCaseSensitive(j, "c1"), *c4 = cJSON_GetObjectItemCaseSensitive(j, "c4");
+    if (!c1 || !c4)
+        return c2b_error_set(err, C2B_ERR_SPEC, "curves.%s: missing", c1 ? "c4" : "c1");
+    if ((st = parse_curve(s, c1, "curves.c1", 0, &in.c1, err)) || (st = parse_curve(s, c4, "curves.c4", 1, &in.c4, err)))
+        return st;
+    const cJSON *w = cJSON_GetObjectItemCaseSensitive(j, "w"), *ctl = cJSON_GetObjectItemCaseSensitive(j, "controls");
+    if (!!w == !!ctl)
+        return c2b_error_set(err, C2B_ERR_SPEC, "curves: give exactly one of 'w' (eq. 24) and 'controls' (eqs. 3-7)");
+    if (w) {
+        in.approach = C2B_ODESURF_MULTIPLES;
+        if ((st = want_numbers(w, "curves.w", 4, in.w, err)))
+            return st;
+    } else {
+        in.approach = C2B_ODESURF_CONTROLS;
+        if (!cJSON_IsArray(ctl) || cJSON_GetArraySize(ctl) != 4)
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "curves.controls: expected 4 control curves (at u2 < u3 near u = 0, u5 < u6 near u = 1)");
+        int k = 0;
+        for (const cJSON *x = ctl->child; x; x = x->next, k++) {
+            char f[LABEL_LEN];
+            snprintf(f, sizeof f, "curves.controls[%d]", k);
+            static const char *const ck[] = {"u", "curve", NULL};
+            if (!cJSON_IsObject(x))
+                return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected {\"u\": ..., \"curve\": [x, y, z]}", f);
+            if ((st = check_keys(x, f, ck, err)))
+                return st;
+            char fu[LABEL_LEN + 8], fc[LABEL_LEN + 8];
+            snprintf(fu, sizeof fu, "%s.u", f);
+            snprintf(fc, sizeof fc, "%s.curve", f);
+            const cJSON *u = cJSON_GetObjectItemCaseSensitive(x, "u");
+            if (!u)
+                return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing", fu);
+            if ((st = want_number(u, fu, &in.uc[k], err)) ||
+                (st = parse_curve(s, cJSON_GetObjectItemCaseSensitive(x, "curve"), fc, 2 + k, &in.control[k], err)))
+                return st;
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        in.shape[k] = s->pb.shape[0][k];
+    in.dom = s->pb.dom;
+    in.time = s->pb.time;
+    if ((st = c2b_odesurf_create(&in, &s->odesurf, err)))
+        return st;
+    const c2b_problem *op = c2b_odesurf_problem(s->odesurf);
+    memcpy(s->pb.data, op->data, sizeof s->pb.data);
+    return C2B_OK;
+}
+
 static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
 {
     if (!cJSON_IsObject(root))
         return c2b_error_set(err, C2B_ERR_SPEC, "spec: the top level must be a JSON object");
     static const char *const keys[] = {"name", "description", "source", "continuity", "shape",
                                        "v_range", "periodic", "constants", "time", "primaries",
-                                       "boundary", "force", "tolerance", NULL};
+                                       "boundary", "force", "tolerance", "solver", "M", "N",
+                                       "collocation", "approach", "curves", NULL};
     c2b_status st = check_keys(root, "", keys, err);
     if (st)
         return st;
@@ -661,12 +815,24 @@ static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
     st = parse_constants(s, cJSON_GetObjectItemCaseSensitive(root, "constants"), err);
     if (st)
         return st;
+    if ((st = parse_solver(s, root, err)))
+        return st;
     const cJSON *prim = cJSON_GetObjectItemCaseSensitive(root, "primaries");
     const cJSON *bnd = cJSON_GetObjectItemCaseSensitive(root, "boundary");
+    const cJSON *crv = cJSON_GetObjectItemCaseSensitive(root, "curves");
+    if (crv) {
+        if (prim || bnd)
+            return c2b_error_set(err, C2B_ERR_SPEC, "curves: give 'curves' alone, without 'primaries' or 'boundary'");
+        if ((st = parse_curves(s, crv, err)))
+            return st;
+        if ((j = cJSON_GetObjectItemCaseSensitive(root, "force")))
+            return c2b_error_set(err, C2B_ERR_SPEC, "force: not supported with 'curves'");
+        return C2B_OK;
+    }
     if (prim && bnd)
         return c2b_error_set(err, C2B_ERR_SPEC, "spec: give either 'primaries' or 'boundary', not both");
     if (!prim && !bnd)
-        return c2b_error_set(err, C2B_ERR_SPEC, "spec: missing 'primaries' (or explicit 'boundary' data)");
+        return c2b_error_set(err, C2B_ERR_SPEC, "spec: missing 'primaries' (or explicit 'boundary' data, or 'curves')");
     if (prim) {
         if (!cJSON_IsArray(prim) || cJSON_GetArraySize(prim) != 2)
             return c2b_error_set(err, C2B_ERR_SPEC, "primaries: expected an array of exactly 2 primaries");
@@ -685,6 +851,55 @@ static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
     if ((s->prim[0].kind == 2 || s->prim[1].kind == 2) &&
         !cJSON_GetObjectItemCaseSensitive(root, "tolerance"))
         s->pb.tol.truncation_rel = 1e-9;
+    return C2B_OK;
+}
+
+/* Points per trimline, and the relative distance (of the largest |S|) below which two
+ * points count as equal, in the degenerate-trimline check below. */
+#define TRIMLINE_CHECK_POINTS 33
+#define TRIMLINE_DEGENERATE_REL 1e-12
+
+/* Primaries whose trimline is a single point, or whose two trimlines coincide, leave
+ * nothing to blend: report them by name. Non-finite values are left to the blend,
+ * whose message gives the datum and v. */
+static c2b_status check_trimlines(c2b_spec *s, c2b_error *err)
+{
+    if (!s->prim[0].kind || !s->prim[1].kind)
+        return C2B_OK;
+    double S[2][TRIMLINE_CHECK_POINTS][3], scale = 0.0;
+    const c2b_vdomain *dom = &s->pb.dom;
+    int np = TRIMLINE_CHECK_POINTS;
+    for (int side = 0; side < 2; side++)
+        for (int i = 0; i < np; i++) {
+            double v = dom->v0 + (dom->v1 - dom->v0) * i / (dom->periodic ? np : np - 1);
+            c2b_error ignored; /* not NULL: c2b_error_prefix() returns C2B_OK for NULL */
+            if (c2b_spec_primary_eval(s, side, side, v, s->pb.time, 0, S[side][i], &ignored))
+                return C2B_OK;
+            for (int c = 0; c < 3; c++) {
+                if (!isfinite(S[side][i][c]))
+                    return C2B_OK;
+                scale = fmax(scale, fabs(S[side][i][c]));
+            }
+        }
+    double tol = TRIMLINE_DEGENERATE_REL * scale, len[2] = {0, 0}, gap = 0;
+    for (int i = 0; i < np; i++)
+        for (int c = 0; c < 3; c++) {
+            for (int side = 0; side < 2; side++)
+                len[side] = fmax(len[side], fabs(S[side][i][c] - S[side][0][c]));
+            gap = fmax(gap, fabs(S[0][i][c] - S[1][i][c]));
+        }
+    for (int side = 0; side < 2; side++)
+        if (len[side] <= tol)
+            return c2b_error_set(err, C2B_ERR_SPEC,
+                                 "primaries[%d]: degenerate trimline at %s = %g: zero length (every "
+                                 "v gives the point (%g, %g, %g))",
+                                 side, s->prim[side].across_v ? "trim_v" : "trim_u",
+                                 s->prim[side].trim, S[side][0][0], S[side][0][1], S[side][0][2]);
+    if (gap <= tol)
+        return c2b_error_set(err, C2B_ERR_SPEC,
+                             "primaries[0] and primaries[1]: the two trimlines are identical "
+                             "(largest distance %g over %d points in v): there is nothing to blend",
+                             gap, np);
     return C2B_OK;
 }
 
@@ -720,6 +935,8 @@ c2b_status c2b_spec_parse(const char *json, size_t len, c2b_spec **out, c2b_erro
     s->pb = c2b_problem_default();
     c2b_status st = parse_root(s, root, err);
     cJSON_Delete(root);
+    if (!st)
+        st = check_trimlines(s, err);
     if (st) {
         c2b_spec_destroy(s);
         return st;
@@ -772,4 +989,101 @@ c2b_status c2b_spec_load(const char *path, c2b_spec **out, c2b_error *err)
     }
     free(buf);
     return st;
+}
+
+c2b_spec_solver c2b_spec_solver_settings(const c2b_spec *s)
+{
+    c2b_spec_solver z;
+    memset(&z, 0, sizeof z);
+    return s ? s->solver : z;
+}
+
+static double datum_vk(void *ctx, int k, double v, double t)
+{
+    const datum *d = ctx;
+    if (k < 0 || k > C2B_VDATA_MAX_K)
+        return NAN;
+    if (k == 0)
+        return d->sign * c2b_expr_eval(d->e, d->u, v, t);
+    if (d->vkind == 1 && k > 2)
+        return 0.0;
+    if (d->vkind == 2 && k > 2) /* e^(2q + r) = beta^q e^(r) */
+        return pow(d->vbeta, k / 2) * datum_vk(ctx, k % 2, v, t);
+    return d->ev[k] ? d->sign * c2b_expr_eval(d->ev[k], d->u, v, t) : NAN;
+}
+
+/* Sample points of the structure test: v across the range, three times. */
+#define VDATA_TEST_POINTS 37
+#define VDATA_TEST_REL 1e-11
+
+/* Classify datum d from e and e'': 1 when e'' = 0, 2 when e'' = beta e with one beta
+ * at every test point (then all higher derivatives follow exactly), 0 otherwise. */
+static int vdata_structure(const c2b_spec *s, datum *d)
+{
+    const double ts[3] = {s->pb.time, s->pb.time + 0.37, s->pb.time + 1.1};
+    double f[3][VDATA_TEST_POINTS], f2[3][VDATA_TEST_POINTS], fmax_ = 0, f2max = 0, num = 0, den = 0;
+    for (int it = 0; it < 3; it++)
+        for (int i = 0; i < VDATA_TEST_POINTS; i++) {
+            double v = s->pb.dom.v0 + (s->pb.dom.v1 - s->pb.dom.v0) * (i + 0.31) / VDATA_TEST_POINTS;
+            f[it][i] = c2b_expr_eval(d->e, d->u, v, ts[it]);
+            f2[it][i] = c2b_expr_eval(d->ev[2], d->u, v, ts[it]);
+            if (!isfinite(f[it][i]) || !isfinite(f2[it][i]))
+                return 0;
+            fmax_ = fmax(fmax_, fabs(f[it][i]));
+            f2max = fmax(f2max, fabs(f2[it][i]));
+            num += f2[it][i] * f[it][i];
+            den += f[it][i] * f[it][i];
+        }
+    if (f2max <= VDATA_TEST_REL * fmax_)
+        return 1;
+    if (!(den > 0))
+        return 0;
+    double beta = num / den;
+    for (int it = 0; it < 3; it++)
+        for (int i = 0; i < VDATA_TEST_POINTS; i++)
+            if (fabs(f2[it][i] - beta * f[it][i]) > VDATA_TEST_REL * f2max)
+                return 0;
+    d->vbeta = beta;
+    return 2;
+}
+
+c2b_status c2b_spec_vdata(c2b_spec *s, int kmax, c2b_vdata *out, c2b_error *err)
+{
+    if (!s || !out || kmax < 0 || kmax > C2B_VDATA_MAX_K)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_spec_vdata: NULL argument or kmax outside 0..%d",
+                             C2B_VDATA_MAX_K);
+    memset(out, 0, sizeof *out);
+    int n = c2b_continuity_n(s->pb.continuity);
+    for (int c = 0; c < C2B_NCOMP; c++)
+        for (int side = 0; side < 2; side++)
+            for (int p = 0; p < n; p++) {
+                datum *d = &s->data[c][side][p];
+                const c2b_bfunc *bf = &s->pb.data[c][side][p];
+                if (!bf->fn && !bf->samples)
+                    continue;
+                if (!d->e || d->prim || s->odesurf)
+                    return c2b_error_set(err, C2B_ERR_SPEC,
+                                         "%s: the approximate solvers need expression data (symbolic v-derivatives), "
+                                         "not NURBS, samples or curves",
+                                         d->label[0] ? d->label : "boundary data");
+                /* libmatheval does not simplify: each derivative order multiplies the
+                 * expression size by ~5 (a 6th derivative of a small primary takes seconds).
+                 * So e' and e'' are derived first; when e'' = 0 or e'' = beta e (the
+                 * thesis' groups 1 and 2) the higher orders follow exactly, and only
+                 * other data are differentiated further, one order at a time. */
+                for (int k = 1; k <= kmax; k++) {
+                    if (k == 3)
+                        d->vkind = vdata_structure(s, d);
+                    if (k >= 3 && d->vkind)
+                        break;
+                    if (!d->ev[k]) {
+                        c2b_status st = c2b_expr_derivative(k == 1 ? d->e : d->ev[k - 1], 'v', 1, &d->ev[k], err);
+                        if (st)
+                            return c2b_error_prefix(err, "%s: d^%d/dv^%d: ", d->label, k, k);
+                    }
+                }
+                c2b_vdfunc f = {datum_vk, d, bf->time_dependent};
+                out->f[c][side][p] = f;
+            }
+    return C2B_OK;
 }

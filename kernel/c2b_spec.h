@@ -14,6 +14,7 @@
 
 #include "c2b_error.h"
 #include "c2b_problem.h"
+#include "c2b_vdata.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -62,6 +63,33 @@ int c2b_spec_has_primaries(const c2b_spec *s);
  */
 c2b_status c2b_spec_primary_eval(c2b_spec *s, int side, double ub, double v, double t, int order,
                                  double *out, c2b_error *err);
+
+/** Solvers a spec selects with "solver" (docs/APPROX.md). */
+typedef enum c2b_solver_kind {
+    C2B_SOLVER_EXACT = 0,          /**< the closed form (c2b_blend.h), the default */
+    C2B_SOLVER_THESIS_APPROX = 1,  /**< thesis eqs. 95-126 (c2b_approx.h) */
+    C2B_SOLVER_PSEUDO_NAVIER = 2   /**< seed 001 eqs. 9-15 (c2b_navier.h) */
+} c2b_solver_kind;
+
+/** A spec's solver settings; 0 in M, N, ci, cj means the solver's default. */
+typedef struct c2b_spec_solver {
+    c2b_solver_kind kind;  /**< "solver" */
+    int M, N;              /**< "M" (both), "N" (pseudo-navier) */
+    int ci, cj;            /**< "collocation": [I, J] */
+    int approach;          /**< "approach": 0 "differential" (default), 1 "decomposition" */
+} c2b_spec_solver;
+
+/** The spec's "solver", "M", "N", "collocation" and "approach" (zeros when absent). */
+c2b_spec_solver c2b_spec_solver_settings(const c2b_spec *s);
+
+/**
+ * The boundary data with symbolic v-derivatives up to order kmax (<= C2B_VDATA_MAX_K),
+ * for the approximate solvers. Derivatives are made once and kept in the spec (so s is
+ * not const); out refers to the spec and is valid while it lives.
+ * @return C2B_OK; C2B_ERR_SPEC naming the datum for NURBS, sampled or "curves" data,
+ *         or when libmatheval cannot differentiate; C2B_ERR_ARG; C2B_ERR_NOMEM.
+ */
+c2b_status c2b_spec_vdata(c2b_spec *s, int kmax, c2b_vdata *out, c2b_error *err);
 
 /** The spec's "name", or "" when absent. */
 const char *c2b_spec_name(const c2b_spec *s);

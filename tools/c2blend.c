@@ -29,6 +29,7 @@
 #include "c2b_mesh.h"
 #include "c2b_nurbs_json.h"
 #include "c2b_spec.h"
+#include "c2b_surface.h"
 
 #define EXIT_USAGE 2
 #define EXIT_NUMERIC 3
@@ -41,7 +42,8 @@ static const char USAGE[] =
     "       c2blend mesh SPEC [--t T] [--n 64] [--with-primaries WIDTH] -o OUT.{obj,ply,off}\n"
     "       c2blend check SPEC [--t T] [--samples N] [--table] [--tol-g0 R] [--tol-g1 RAD] [--tol-g2 R] [--tol-c R]\n"
     "       c2blend profile SPEC [--t T] [--n 201] [--with-primaries WIDTH] [--at V1,V2,...]\n"
-    "SPEC is a JSON blend spec (see README.md), '-' for standard input.\n";
+    "SPEC is a JSON blend spec (see README.md), '-' for standard input. Specs with an approximate\n"
+    "\"solver\" (thesis-approx, pseudo-navier; docs/APPROX.md) work with eval and info only.\n";
 
 static int exit_code(c2b_status st)
 {
@@ -171,8 +173,9 @@ static int parse_args(int argc, char **argv, options *o)
                 return usage_error(a, "needs an integer >= 2");
             grid = 1;
         } else if (!strcmp(a, "--n")) {
-            if (!has_val || parse_long(argv[++i], 2, &o->nmesh))
-                return usage_error("--n", "needs an integer >= 2");
+            /* a clear limit, not an allocation failure or an int overflow downstream */
+            if (!has_val || parse_long(argv[++i], 2, &o->nmesh) || o->nmesh > 100000)
+                return usage_error("--n", "needs an integer in 2..100000");
         } else if (!strcmp(a, "--degree-v")) {
             if (!has_val || parse_long(argv[++i], 1, &o->degree_v) || (o->degree_v != 3 && o->degree_v != 5))
                 return usage_error("--degree-v", "must be 3 or 5");
@@ -272,11 +275,14 @@ static c2b_status read_points(const char *path, double **pu, double **pv, size_t
     return C2B_OK;
 }
 
-static int cmd_eval(const options *o, const c2b_blend *b, const c2b_problem *pb)
+/* b is the exact blend; sf (non-NULL for an approximate "solver") replaces it. */
+static int cmd_eval(const options *o, const c2b_blend *b, const c2b_surface *sf, const c2b_problem *pb)
 {
     c2b_error err;
     c2b_error_clear(&err);
     int order = o->derivs ? (pb->continuity == C2B_C3 ? 3 : 2) : 0;
+    if (sf && order > c2b_surface_max_order(sf))
+        order = c2b_surface_max_order(sf);
     size_t nd = c2b_blend_deriv_count(order);
     double *u = NULL, *v = NULL, *out = NULL;
     size_t np = 0, nu = 0, nv = 0;
@@ -306,7 +312,10 @@ static int cmd_eval(const options *o, const c2b_blend *b, const c2b_problem *pb)
         if (!out)
             st = c2b_error_set(&err, C2B_ERR_NOMEM, "out of memory for %zu points", np);
     }
-    if (!st)
+    if (!st && sf)
+        st = o->points ? c2b_surface_eval(sf, np, u, v, order, out, &err)
+                       : c2b_surface_eval_grid(sf, nu, u, nv, v, order, out, &err);
+    else if (!st)
         st = o->points ? c2b_blend_eval(b, np, u, v, order, out, &err)
                        : c2b_blend_eval_grid(b, nu, u, nv, v, order, out, &err);
     /* Never print numbers that are not finite. */
@@ -583,6 +592,19 @@ int main(int argc, char **argv)
     c2b_problem pb = *c2b_spec_problem(spec);
     if (o.have_t)
         pb.time = o.t;
+    if (c2b_spec_solver_settings(spec).kind != C2B_SOLVER_EXACT && strcmp(o.command, "info")) {
+        /* the papers' approximate solvers (docs/APPROX.md): eval; info describes the
+         * exact mode analysis of the same data */
+        c2b_surface *sf = NULL;
+        if (strcmp(o.command, "eval"))
+            st = c2b_error_set(&err, C2B_ERR_SPEC, "solver: approximate solvers are available to 'eval' (and 'info') only");
+        else
+            st = c2b_surface_create(spec, pb.time, &sf, &err);
+        rc = st ? fail(&err) : cmd_eval(&o, NULL, sf, &pb);
+        c2b_surface_destroy(sf);
+        c2b_spec_destroy(spec);
+        return rc;
+    }
     c2b_blend *b = NULL;
     st = c2b_blend_create(&pb, &b, &err);
     if (st) {
@@ -590,7 +612,7 @@ int main(int argc, char **argv)
         return fail(&err);
     }
     if (!strcmp(o.command, "eval"))
-        rc = cmd_eval(&o, b, &pb);
+        rc = cmd_eval(&o, b, NULL, &pb);
     else if (!strcmp(o.command, "fit"))
         rc = cmd_fit(&o, b);
     else if (!strcmp(o.command, "mesh"))
