@@ -48,7 +48,8 @@ c2b_status c2b_error_set(c2b_error *err, c2b_status code, const char *fmt, ...)
 /**
  * Prefix the message already in `err` with a context string such as a field path
  * (`"primaries[1].surface[2]: "`). No-op when `err` is NULL.
- * @return err->code (or C2B_OK when err is NULL).
+ * @return err->code, or C2B_OK when err is NULL: so never `return` this call's value
+ *         as the failing status; return the status you already have.
  */
 c2b_status c2b_error_prefix(c2b_error *err, const char *fmt, ...)
 #if defined(__GNUC__)

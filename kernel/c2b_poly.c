@@ -195,8 +195,10 @@ c2b_status c2b_poly_solve_pde(const c2b_operator *op, int dm, const double *data
         }
         trim(&rhs);
         st = c2b_poly_particular(n, c0, &rhs, &G[m], err);
-        if (st)
-            return c2b_error_prefix(err, "polynomial part, v^%d: ", m);
+        if (st) {
+            c2b_error_prefix(err, "polynomial part, v^%d: ", m);
+            return st;
+        }
         double pb[C2B_MAX_M];
         c2b_poly_boundary(&G[m], n, pb);
         for (int j = 0; j < m2; j++) {

@@ -155,8 +155,10 @@ c2b_status c2b_spec_primary_eval(c2b_spec *s, int side, double ub, double v, dou
         double a = pr->map0 + pr->map1 * (v - s->pb.dom.v0), skl[3 * 3 * 3];
         c2b_status st = pr->across_v ? c2b_nurbs_surface_derivs(pr->nurbs, a, cross, order, order, skl, err)
                                      : c2b_nurbs_surface_derivs(pr->nurbs, cross, a, order, order, skl, err);
-        if (st)
-            return c2b_error_prefix(err, "primaries[%d]: ", side);
+        if (st) {
+            c2b_error_prefix(err, "primaries[%d]: ", side);
+            return st;
+        }
         for (size_t e = 0; e < nd; e++) {
             int ka = ea[e], kb = eb[e];
             int idx = pr->across_v ? kb * (order + 1) + ka : ka * (order + 1) + kb;
@@ -177,7 +179,8 @@ c2b_status c2b_spec_primary_eval(c2b_spec *s, int side, double ub, double v, dou
                 c2b_expr_destroy(du);
                 if (st) {
                     pr->deriv_failed = 1;
-                    return c2b_error_prefix(err, "primaries[%d].surface[%d]: ", side, c);
+                    c2b_error_prefix(err, "primaries[%d].surface[%d]: ", side, c);
+                    return st;
                 }
             }
             if (!*slot)
@@ -304,16 +307,18 @@ static c2b_status parse_shape(c2b_spec *s, const cJSON *j, c2b_error *err)
         return C2B_OK;
     if (cJSON_IsArray(j)) {
         c2b_status st = want_numbers(j, "shape", ns, s->pb.shape[0], err);
-        if (st)
-            return c2b_error_prefix(err, "(%s takes %d: %s%s%s%s%s%s%s%s%s) ",
-                                    c2b_continuity_name(s->pb.continuity), ns,
-                                    c2b_continuity_param_name(s->pb.continuity, 0), ", ",
-                                    c2b_continuity_param_name(s->pb.continuity, 1), ", ",
-                                    c2b_continuity_param_name(s->pb.continuity, 2),
-                                    ns > 3 ? ", " : "",
-                                    ns > 3 ? c2b_continuity_param_name(s->pb.continuity, 3) : "",
-                                    ns > 4 ? ", " : "",
-                                    ns > 4 ? c2b_continuity_param_name(s->pb.continuity, 4) : "");
+        if (st) {
+            c2b_error_prefix(err, "(%s takes %d: %s%s%s%s%s%s%s%s%s) ",
+                             c2b_continuity_name(s->pb.continuity), ns,
+                             c2b_continuity_param_name(s->pb.continuity, 0), ", ",
+                             c2b_continuity_param_name(s->pb.continuity, 1), ", ",
+                             c2b_continuity_param_name(s->pb.continuity, 2),
+                             ns > 3 ? ", " : "",
+                             ns > 3 ? c2b_continuity_param_name(s->pb.continuity, 3) : "",
+                             ns > 4 ? ", " : "",
+                             ns > 4 ? c2b_continuity_param_name(s->pb.continuity, 4) : "");
+            return st;
+        }
         memcpy(s->pb.shape[1], s->pb.shape[0], sizeof s->pb.shape[0]);
         memcpy(s->pb.shape[2], s->pb.shape[0], sizeof s->pb.shape[0]);
         return C2B_OK;
@@ -464,8 +469,10 @@ static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error
         for (int p = 0; p < n; p++) {
             c2b_expr *dp = NULL;
             st = c2b_expr_derivative(pr->surf[c], 'u', p, &dp, err);
-            if (st)
-                return c2b_error_prefix(err, "%s: ", f);
+            if (st) {
+                c2b_error_prefix(err, "%s: ", f);
+                return st;
+            }
             snprintf(s->data[c][side][p].label, LABEL_LEN, "%s (d^%d/du^%d at u=%g)", f, p, p,
                      pr->trim);
             bind_expr_datum(s, c, side, p, dp, pr->trim, sign);
@@ -1078,8 +1085,10 @@ c2b_status c2b_spec_vdata(c2b_spec *s, int kmax, c2b_vdata *out, c2b_error *err)
                         break;
                     if (!d->ev[k]) {
                         c2b_status st = c2b_expr_derivative(k == 1 ? d->e : d->ev[k - 1], 'v', 1, &d->ev[k], err);
-                        if (st)
-                            return c2b_error_prefix(err, "%s: d^%d/dv^%d: ", d->label, k, k);
+                        if (st) {
+                            c2b_error_prefix(err, "%s: d^%d/dv^%d: ", d->label, k, k);
+                            return st;
+                        }
                     }
                 }
                 c2b_vdfunc f = {datum_vk, d, bf->time_dependent};

@@ -543,8 +543,10 @@ c2b_status c2b_iges_write_surface(const c2b_nurbs_surface *s, const char *path,
 
     c2b_atomic_file f;
     st = c2b_atomic_open(&f, path, err);
-    if (st != C2B_OK)
-        return c2b_error_prefix(err, "iges: ");
+    if (st != C2B_OK) {
+        c2b_error_prefix(err, "iges: ");
+        return st;
+    }
     long counts[4];
     int e = write_sections(f.fp, &g, fname, unit, date, count.nrec, counts);
     if (e != 0) {
@@ -552,5 +554,7 @@ c2b_status c2b_iges_write_surface(const c2b_nurbs_surface *s, const char *path,
         return io_error(err, "cannot write", path, NULL, e);
     }
     st = c2b_atomic_commit(&f, err);
-    return st != C2B_OK ? c2b_error_prefix(err, "iges: ") : C2B_OK;
+    if (st != C2B_OK)
+        c2b_error_prefix(err, "iges: ");
+    return st;
 }
