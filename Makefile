@@ -1,5 +1,6 @@
 # C2Blend: the two commands of the README.
-#   make demo   install Debian packages, build, blend the thesis' two cylinders
+#   make demo   install Debian packages, build, blend the thesis' two cylinders, G2-fillet a
+#               shaft on a plate with the FreeCAD workbench's code (out/demo.step)
 #   make results regenerate docs/RESULTS.md (papers' solvers vs the closed form) with bench/compare
 #   make test   install Debian packages, build, run every test, then again under
 #               AddressSanitizer + UndefinedBehaviorSanitizer, a subset under Valgrind,
