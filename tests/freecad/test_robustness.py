@@ -109,3 +109,23 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()
     assert doc.getObject(name).Verdict == "G2"
+
+
+def test_plugin_writers_are_atomic(tmp_path):
+    """STEP/BREP frames are written to a temporary file and renamed: a failing write
+    (the target is a directory; an unwritable folder) leaves no partial file, and an
+    existing file is replaced only by a complete one."""
+    from c2bwb.objects.animate import write_shape
+    shape = Part.makeBox(1, 2, 3)
+    target = tmp_path / "frame.step"
+    write_shape(shape, str(target))
+    first = target.read_bytes()
+    assert b"ISO-10303-21" in first and Part.read(str(target)).isValid()
+    (tmp_path / "dir.step").mkdir()
+    with pytest.raises(C2BlendError, match=r"cannot write .*dir\.step"):
+        write_shape(shape, str(tmp_path / "dir.step"))
+    with pytest.raises(C2BlendError, match="cannot write"):
+        write_shape(shape, str(tmp_path / "missing" / "x.brep"))
+    write_shape(Part.makeBox(4, 5, 6), str(target))
+    assert Part.read(str(target)).Volume == pytest.approx(120.0)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["dir.step", "frame.step"]

@@ -24,6 +24,23 @@ try:
     part = doc.addObject("Part::Feature", "ShaftPlate")
     part.Shape = solid
     doc.recompute()
+    # bad selections through the commands: each says why (the modal warning is
+    # recorded here instead of waiting for a click) and nothing changes in the document
+    warnings = []
+    QtGui.QMessageBox.warning = staticmethod(lambda parent, title, text: warnings.append(text))
+    before = [(o.Name, o.Shape.exportBrepToString()) for o in doc.Objects]
+    for bad in (["Face1"], ["Vertex1"], []):
+        FreeCADGui.Selection.clearSelection()
+        for sub in bad:
+            FreeCADGui.Selection.addSelection(part, sub)
+        if not bad:
+            FreeCADGui.Selection.addSelection(part)
+        for cmd in ("C2Blend_Fillet", "C2Blend_BlendFaces", "C2Blend_Check"):
+            FreeCADGui.runCommand(cmd)
+    FreeCADGui.Control.closeDialog()
+    result["warnings"] = warnings
+    result["bad_selections_unchanged"] = before == [(o.Name, o.Shape.exportBrepToString())
+                                                    for o in doc.Objects]
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(part, edge)
     FreeCADGui.runCommand("C2Blend_Fillet")

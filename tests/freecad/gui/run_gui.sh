@@ -29,6 +29,11 @@ assert r["verdict"] == "G2" and r["valid"], r
 assert r["map_nodes"] == 1, r
 assert r["non_white_fraction"] > 0.05 and r["colours"] > 50, r
 assert r["blend_verdict"] == "G2", r
+assert r["bad_selections_unchanged"], r
+assert "ShaftPlate.Face1: Face1 is not an edge; select only edges" in r["warnings"], r
+assert "ShaftPlate.Vertex1: Vertex1 is not an edge; select only edges" in r["warnings"], r
+assert "ShaftPlate: no edges selected" in r["warnings"], r
+assert "pick a face and one of its edges on each of two sides (selected: ShaftPlate.Face1)" in r["warnings"], r
 assert r["png_frames"] == 10 and r["png_sizes_ok"], r
 print("gui test: G2 fillet, curvature map shown, screenshot not blank; G2 blend faces; "
       "10 PNG animation frames")

@@ -76,13 +76,17 @@ class BlendFaces(_Command):
         sides = []
         for s in FreeCADGui.Selection.getSelectionEx():
             names = list(s.SubElementNames)
+            if not names:
+                sides.append((s.Object, []))
             while names:
                 pair, names = names[:2], names[2:]
                 sides.append((s.Object, pair))
         try:
             if len(sides) != 2:
-                raise C2BlendError("pick a face and one of its edges on each side "
-                                   "(%d pairs selected)" % len(sides))
+                picked = ", ".join("%s.%s" % (o.Label, "+".join(p) or "(whole object)")
+                                   for o, p in sides) or "nothing"
+                raise C2BlendError("pick a face and one of its edges on each of two sides "
+                                   "(selected: %s)" % picked)
             make.make_blend(sides[0], sides[1], make_solid=False)
         except C2BlendError as ex:
             _fail("C2 Blend faces", ex)
