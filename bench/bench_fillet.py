@@ -10,8 +10,7 @@ import sys
 import time
 
 sys.path.append("/usr/lib/freecad-python3/lib")
-import FreeCAD  # noqa: E402,F401
-import Part  # noqa: E402
+import FreeCAD  # noqa: E402,F401  (initialises FreeCAD before Part is imported)
 
 sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "freecad"))
 import shapes  # noqa: E402

@@ -8,7 +8,6 @@ faces in the result, classifies their edges, and samples corresponding points.
 """
 import Part
 
-from ..errors import C2BlendError
 from .surface import frame_at_point, angle
 
 TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
@@ -47,6 +46,13 @@ def _unique_edges(face):
         if not any(e.isSame(o) for o in out):
             out.append(e)
     return out
+
+
+def _snap(c, lo, hi):
+    """c, or the end of [lo, hi] it lies within 1e-6 (relative) of: projections onto
+    periodic surfaces may return a parameter a period away or a rounding off the end."""
+    end = min((lo, hi), key=lambda x: abs(x - c))
+    return end if abs(end - c) < 1e-6 * (1 + abs(hi - lo)) else c
 
 
 class RollingBallFace:
@@ -99,10 +105,9 @@ class RollingBallFace:
         for e, _ in self.contacts:
             p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
             cs.append(s.parameter(p)[across])
-        # snap to the parameter range (periodic surfaces may return shifted values)
         r = self.face.ParameterRange
         lo, hi = (r[2], r[3]) if across == 1 else (r[0], r[1])
-        self.across = tuple(min((lo, hi), key=lambda x: abs(x - c)) if min(abs(c - lo), abs(c - hi)) < 1e-6 * (1 + abs(hi - lo)) else c for c in cs)
+        self.across = tuple(_snap(c, lo, hi) for c in cs)
         self.range = (r[0], r[1]) if self.along == 0 else (r[2], r[3])
         self.closed = not self.ends
 
@@ -122,16 +127,3 @@ class RollingBallFace:
             return [a0 + (a1 - a0) * k / n for k in range(n)]
         return [a0 + (a1 - a0) * k / (n - 1) for k in range(n)]
 
-
-def describe_edge(shape, edge, label):
-    """'Label.EdgeN' for an edge of shape (N as in FreeCAD's sub-element names)."""
-    for i, e in enumerate(shape.Edges):
-        if e.isSame(edge):
-            return "%s.Edge%d" % (label, i + 1)
-    return "%s.<edge>" % label
-
-
-def require(cond, message, where, kind="selection"):
-    """Raise C2BlendError(message, where, kind) unless cond."""
-    if not cond:
-        raise C2BlendError(message, where, kind)
