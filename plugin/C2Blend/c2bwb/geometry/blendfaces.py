@@ -115,7 +115,7 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
     diag = face.BoundBox.DiagonalLength
     reps = []
     for side, prim in ((0.0, face1), (1.0, face2)):
-        r = ck.compare(face, prim, trimline_points(surface, side), diag, oriented=False)
+        r = ck.compare(face, prim, ck.trimline_points(surface, side), diag, oriented=False)
         r["trimline"] = "u=%g (%s)" % (side, names[int(side)])
         reps.append(r)
     report = {"continuity": continuity, "shape_params": list(shape_params), "tension": tension,
@@ -124,16 +124,6 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
               "trimlines": reps, "seconds": time.perf_counter() - t0,
               "verdict": min((r["verdict"] for r in reps), key=ck.RANK.get)}
     return face, report
-
-
-def trimline_points(surface, side, n=101):
-    """(point, tangent, (u, v)) at n v-midpoints of the u = side trimline of surface."""
-    v0, v1 = surface.bounds()[2:4]
-    out = []
-    for k in range(n):
-        v = v0 + (v1 - v0) * (k + 0.5) / n
-        out.append((surface.value(side, v), surface.getDN(side, v, 0, 1), (side, v)))
-    return out
 
 
 def close_solid(faces, where):

@@ -83,6 +83,16 @@ def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
     return worst
 
 
+def trimline_points(surface, side, n=101):
+    """(point, tangent, (u, v)) at n v-midpoints of the u = side trimline of surface."""
+    v0, v1 = surface.bounds()[2:4]
+    out = []
+    for k in range(n):
+        v = v0 + (v1 - v0) * (k + 0.5) / n
+        out.append((surface.value(side, v), surface.getDN(side, v, 0, 1), (side, v)))
+    return out
+
+
 def check_edge(shape, edge, samples=101, diagonal=None):
     """Continuity report (dict) for one edge shared by two faces of `shape`.
 

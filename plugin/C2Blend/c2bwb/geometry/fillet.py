@@ -6,7 +6,7 @@ and corresponding points (its cross-sections). Each rolling-ball face whose two 
 edges border unfilleted faces is replaced by the PDE blend with G2 cross-boundary data
 from those faces, fitted as a B-spline face; planar faces at the fillet's ends get the
 blend's end curve as their new boundary; everything is sewn into a solid and checked
-(isValid, BRepCheck, and continuity along every trimline). OCCT corner patches, where
+(BRepCheck, and continuity along every trimline). OCCT corner patches, where
 fillets meet at a vertex, are kept and reported as such: no G2 claim is made there.
 """
 import math
@@ -153,10 +153,12 @@ def assemble(result, blended, where):
     sewn.sewShape()
     shells = sewn.Shells if sewn.ShapeType != "Shell" else [sewn]
     if len(shells) != 1 or not shells[0].isClosed():
-        free = len(Part.Compound(faces_out).Faces)
-        raise C2BlendError("sewing the blend faces to the solid failed (%d shells, closed=%s, "
-                           "%d faces)" % (len(shells), [s.isClosed() for s in shells], free),
-                           where, "sewing")
+        free = sum(1 for s in shells for e in s.Edges
+                   if len(s.ancestorsOfType(e, Part.Face)) == 1
+                   and not e.isSeam(s.ancestorsOfType(e, Part.Face)[0]))
+        raise C2BlendError("sewing the blend faces to the solid failed: %d shell(s), %d free "
+                           "edge(s) left (gaps wider than the sewing tolerance)"
+                           % (len(shells), free), where, "sewing")
     solid = Part.Solid(shells[0])
     if solid.Volume < 0:
         solid.reverse()
@@ -168,7 +170,7 @@ def assemble(result, blended, where):
     return solid
 
 
-def _where(label, names, shape, rbf):
+def _where(label, names, rbf):
     """Names of the selected edges nearest to a rolling-ball face, for messages."""
     d = [(rbf.face.distToShape(e)[0], n) for n, e in names]
     best = min(x for x, _ in d)
@@ -179,13 +181,12 @@ def _trimline_checks(solid, blended):
     """Continuity of the solid across both trimlines of each blend face, at 101 points
     per trimline, evaluated on the blend at known parameters and projected onto the
     neighbouring face of the solid."""
-    from .blendfaces import trimline_points
     out = []
     diag = solid.BoundBox.DiagonalLength
     for b in blended:
         face = _find_face(solid, b.surface)
         for side in (0.0, 1.0):
-            pts = trimline_points(b.surface, side)
+            pts = ck.trimline_points(b.surface, side)
             probe = Part.Vertex(pts[len(pts) // 2][0])
             nbrs = [f for e in face.Edges for f in ck.edge_faces(solid, e)
                     if not f.isSame(face) and e.distToShape(probe)[0] < 1e-6 * diag]
@@ -246,7 +247,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     blended, kept = [], []
     for f in fillet_faces:
         rbf = RollingBallFace(result, f, fillet_faces)
-        where = _where(label, names, shape, rbf)
+        where = _where(label, names, rbf)
         if rbf.corner:
             kept.append({"where": where, "reason": rbf.corner})
             continue
