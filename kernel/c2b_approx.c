@@ -232,14 +232,9 @@ c2b_status c2b_approx_create(const double shape[C2B_NCOMP][5], const c2b_vdomain
         return c2b_error_set(err, C2B_ERR_ARG, "time: not finite");
     if (!(dom->v1 > dom->v0) || !isfinite(dom->v0) || !isfinite(dom->v1))
         return c2b_error_set(err, C2B_ERR_SPEC, "v_range: [%g, %g] is empty", dom->v0, dom->v1);
-    for (int c = 0; c < C2B_NCOMP; c++) {
-        for (int k = 0; k < 4; k++)
-            if (!isfinite(shape[c][k]))
-                return c2b_error_set(err, C2B_ERR_SPEC, "shape: component %c parameter %d is not finite",
-                                     "xyz"[c], k);
-        if (shape[c][0] == 0)
-            return c2b_error_set(err, C2B_ERR_SPEC, "shape: gamma of component %c is zero", "xyz"[c]);
-    }
+    c2b_status sst = c2b_operator_check_shapes(C2B_C2, C2B_NCOMP, shape, err);
+    if (sst)
+        return sst;
     c2b_approx *a = calloc(1, sizeof *a);
     if (!a)
         return c2b_error_set(err, C2B_ERR_NOMEM, "thesis-approx: out of memory");

@@ -185,14 +185,9 @@ c2b_status c2b_navier_create(const double shape[C2B_NCOMP][5], const c2b_vdomain
     if (!(dom->v1 > dom->v0) || !isfinite(dom->v0) || !isfinite(dom->v1) || !isfinite(t))
         return c2b_error_set(err, C2B_ERR_SPEC, "v_range: [%g, %g] is empty or time not finite",
                              dom->v0, dom->v1);
-    for (int c = 0; c < C2B_NCOMP; c++) {
-        for (int k = 0; k < 3; k++)
-            if (!isfinite(shape[c][k]))
-                return c2b_error_set(err, C2B_ERR_SPEC, "shape: component %c parameter %d is not finite",
-                                     "xyz"[c], k);
-        if (shape[c][0] == 0)
-            return c2b_error_set(err, C2B_ERR_SPEC, "shape: b of component %c is zero", "xyz"[c]);
-    }
+    c2b_status sst = c2b_operator_check_shapes(C2B_C1, C2B_NCOMP, shape, err);
+    if (sst)
+        return sst;
     c2b_navier *nv = calloc(1, sizeof *nv);
     if (!nv)
         return c2b_error_set(err, C2B_ERR_NOMEM, "pseudo-navier: out of memory");

@@ -68,11 +68,12 @@ c2b_status c2b_odesurf_create(const c2b_odesurf_input *in, c2b_odesurf **out, c2
         any1 |= in->c1.fn[c] != NULL, any4 |= in->c4.fn[c] != NULL;
     if (!any1 || !any4)
         return c2b_error_set(err, C2B_ERR_SPEC, "curves.%s: missing boundary curve", any1 ? "c4" : "c1");
-    for (int k = 0; k < 3; k++)
-        if (!isfinite(in->shape[k]))
-            return c2b_error_set(err, C2B_ERR_SPEC, "shape: parameter %d is not finite", k);
-    if (in->shape[0] == 0)
-        return c2b_error_set(err, C2B_ERR_SPEC, "shape: rho is zero (the ODE would drop order)");
+    c2b_operator op; /* checks rho, eta, lambda as every blend does */
+    c2b_status sst = c2b_operator_init(&op, C2B_ODE, in->shape, 3, err);
+    if (sst) {
+        c2b_error_prefix(err, "shape: ");
+        return sst;
+    }
     if (in->approach == C2B_ODESURF_MULTIPLES) {
         for (int k = 0; k < 4; k++)
             if (!isfinite(in->w[k]))

@@ -107,6 +107,20 @@ c2b_status c2b_operator_init(c2b_operator *op, c2b_continuity cont, const double
     return C2B_OK;
 }
 
+c2b_status c2b_operator_check_shapes(c2b_continuity cont, int ncomp, const double (*shape)[5],
+                                     c2b_error *err)
+{
+    for (int c = 0; c < ncomp; c++) {
+        c2b_operator op;
+        c2b_status st = c2b_operator_init(&op, cont, shape[c], c2b_continuity_nshape(cont), err);
+        if (st) {
+            c2b_error_prefix(err, "shape (component %c): ", "xyz"[c]);
+            return st;
+        }
+    }
+    return C2B_OK;
+}
+
 void c2b_operator_mode_coefficients(const c2b_operator *op, double beta, double *c)
 {
     double bk = 1.0;

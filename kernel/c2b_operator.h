@@ -67,6 +67,15 @@ const char *c2b_continuity_param_name(c2b_continuity c, int i);
 c2b_status c2b_operator_init(c2b_operator *op, c2b_continuity cont, const double *shape,
                              int nshape, c2b_error *err);
 
+/**
+ * Check the shape parameters of `ncomp` components (rows of 5, the first
+ * c2b_continuity_nshape(cont) used) exactly as c2b_operator_init() does, for solvers
+ * that need no operator. Errors name the component: "shape (component y): ...".
+ * @return C2B_OK; C2B_ERR_SPEC (non-finite or zero leading parameter); C2B_ERR_NUMERIC.
+ */
+c2b_status c2b_operator_check_shapes(c2b_continuity cont, int ncomp, const double (*shape)[5],
+                                     c2b_error *err);
+
 /** Mode-ODE coefficients c_0..c_n for a mode with f'' = beta f (see file comment). */
 void c2b_operator_mode_coefficients(const c2b_operator *op, double beta, double *c);
 
