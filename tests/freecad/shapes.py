@@ -1,4 +1,7 @@
-"""The parts of the workbench tests, built with Part (no files)."""
+"""The parts of the workbench tests, built with Part (no files), and a document
+fingerprint for checking that failed operations leave documents unchanged."""
+import hashlib
+
 import FreeCAD
 import Part
 
@@ -39,3 +42,14 @@ def circle_edge(shape, z):
         if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z - z) < 1e-9:
             return i
     raise AssertionError("no circle at z = %g" % z)
+
+
+def document_state(doc):
+    """Per object: name, label, state, BREP hash and volume of its shape (if any)."""
+    out = []
+    for o in doc.Objects:
+        sh = getattr(o, "Shape", None)
+        out.append((o.Name, o.Label, tuple(o.State),
+                    hashlib.sha1(sh.exportBrepToString().encode()).hexdigest() if sh else None,
+                    round(sh.Volume, 9) if sh and sh.Solids else None))
+    return out

@@ -184,11 +184,6 @@ def test_animation_10_frames(tmp_path):
 
 
 # bad input: clear messages, documents untouched ------------------------------------------
-def snapshot(doc):
-    return [(o.Name, o.Shape.exportBrepToString() if hasattr(o, "Shape") else None,
-             tuple(o.State)) for o in doc.Objects]
-
-
 @pytest.fixture
 def boxdoc():
     doc = FreeCAD.newDocument("Bad")
@@ -202,12 +197,12 @@ def boxdoc():
 
 def test_face_instead_of_edge(boxdoc):
     doc, box = boxdoc
-    before = snapshot(doc)
+    before = shapes.document_state(doc)
     with pytest.raises(C2BlendError, match=r"Box\.Face1: Face1 is not an edge"):
         make.make_fillet(box, ["Face1"], 2.0)
     with pytest.raises(C2BlendError, match="a Face was given where an edge is needed"):
         C2Blend.fillet(box.Shape, [box.Shape.Faces[0]], 2.0)
-    assert snapshot(doc) == before
+    assert shapes.document_state(doc) == before
 
 
 def test_edge_with_one_face(boxdoc):
@@ -215,18 +210,18 @@ def test_edge_with_one_face(boxdoc):
     sheet = doc.addObject("Part::Feature", "Sheet")
     sheet.Shape = Part.makeBox(10, 10, 10).Faces[0]
     doc.recompute()
-    before = snapshot(doc)
+    before = shapes.document_state(doc)
     with pytest.raises(C2BlendError, match=r"Sheet\.Edge2: the edge has 1 adjacent face;"):
         make.make_fillet(sheet, ["Edge2"], 1.0)
-    assert snapshot(doc) == before
+    assert shapes.document_state(doc) == before
 
 
 def test_radius_too_large(boxdoc):
     doc, box = boxdoc
-    before = snapshot(doc)
+    before = shapes.document_state(doc)
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: .*fillet of radius 20 failed.*too large"):
         make.make_fillet(box, ["Edge1"], 20.0)
-    assert snapshot(doc) == before
+    assert shapes.document_state(doc) == before
 
 
 def resonant_rho(shape, edge):
@@ -237,7 +232,7 @@ def resonant_rho(shape, edge):
     res = shape.makeFillet(2.0, [shape.getElement(edge)])
     from c2bwb.geometry.rollingball import RollingBallFace, new_faces
     ff = new_faces(shape, res)
-    rows0, rows1 = fl.sample_rows(RollingBallFace(res, ff[0], ff), 32, 3, 1.0)
+    rows0, rows1 = fl.sample_rows(RollingBallFace(res, ff[0], ff), 32, 3, 1.0, "test")
     return -trimlines.v_length(rows0, rows1, True) ** 6
 
 
@@ -247,11 +242,11 @@ def test_resonant_shape_parameters(boxdoc):
     base = doc.addObject("Part::Feature", "ShaftPlate")
     base.Shape = s
     doc.recompute()
-    before = snapshot(doc)
+    before = shapes.document_state(doc)
     rho = resonant_rho(s, edge)
     with pytest.raises(C2BlendError, match=r"ShaftPlate\.Edge\d+: the blend cannot be computed: .*resonant"):
         make.make_fillet(base, [edge], 2.0, shape_params=(1.0, 0.0, 0.0, rho))
-    assert snapshot(doc) == before
+    assert shapes.document_state(doc) == before
     # a recompute that fails keeps the previous shape and says why
     f = make.make_fillet(base, [edge], 2.0)
     good = f.Shape.exportBrepToString()

@@ -28,7 +28,7 @@ try:
     # recorded here instead of waiting for a click) and nothing changes in the document
     warnings = []
     QtGui.QMessageBox.warning = staticmethod(lambda parent, title, text: warnings.append(text))
-    before = [(o.Name, o.Shape.exportBrepToString()) for o in doc.Objects]
+    before = shapes.document_state(doc)
     for bad in (["Face1"], ["Vertex1"], []):
         FreeCADGui.Selection.clearSelection()
         for sub in bad:
@@ -39,8 +39,7 @@ try:
             FreeCADGui.runCommand(cmd)
     FreeCADGui.Control.closeDialog()
     result["warnings"] = warnings
-    result["bad_selections_unchanged"] = before == [(o.Name, o.Shape.exportBrepToString())
-                                                    for o in doc.Objects]
+    result["bad_selections_unchanged"] = before == shapes.document_state(doc)
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(part, edge)
     FreeCADGui.runCommand("C2Blend_Fillet")

@@ -14,7 +14,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .fillet import DATA_REL, check_params
-from .trimlines import ROWS, shape_for, side_rows, spec_from_rows
+from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 
 class Trimline:
@@ -90,22 +90,16 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
     nrows = ROWS[continuity]
 
     def rows_at(n):
-        rows0, rows1 = [], []
-        for k in range(n):
-            s = k / n if t1.closed else k / (n - 1)
+        def pair(s):
             a, b = t1.param(s), t2.param(s)
             p1, p2 = edge1.valueAt(a), edge2.valueAt(b)
             g1, g2 = edge1.tangentAt(a), edge2.tangentAt(b)
-            scale = tension * (p2 - p1).Length
-            if scale <= 0:
-                raise C2BlendError("the trimlines touch at normalised arc length %.3g; "
-                                   "a blend needs a gap" % s, where)
-            rows0.append(side_rows(face1, p1, g1, t1.outward(p1, g1), scale, nrows, 1)[0])
-            rows1.append(side_rows(face2, p2, g2, t2.outward(p2, g2), scale, nrows, -1)[0])
-        return rows0, rows1
+            return p1, g1, t1.outward(p1, g1), p2, g2, t2.outward(p2, g2)
+        fractions = (k / n if t1.closed else k / (n - 1) for k in range(n))
+        return pair_rows(face1, face2, (pair(s) for s in fractions), nrows, tension, where)
 
     kernel, n, err = solve_sampled(
-        rows_at, t1.closed,
+        rows_at,
         lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, t1.closed,
                                       "blend " + where),
         where, samples, max_samples, DATA_REL)

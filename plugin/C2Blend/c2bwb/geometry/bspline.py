@@ -51,7 +51,7 @@ def data_error(blend):
     return worst
 
 
-def solve_sampled(rows_at, closed, spec_of, where, samples, max_samples, target):
+def solve_sampled(rows_at, spec_of, where, samples, max_samples, target):
     """Sample boundary rows (rows_at(n) -> (rows0, rows1)), doubling n from `samples`
     until the kernel's measured data error is below `target`, stops improving (less
     than 2x per doubling), or n reaches max_samples. Returns (blend, n, error)."""

@@ -16,7 +16,7 @@ import tempfile
 
 import c2blend
 
-from .surface import Frame
+from .surface import Vector, frame_or_none, tessellation
 
 TOOL = "c2blend-cgal-curvature"
 
@@ -37,19 +37,18 @@ def write_ply(path, shape, blend_faces, other_faces, deflection):
     index, verts, tris = {}, [], []
     for fi, face in enumerate(list(blend_faces) + list(other_faces)):
         region = 0 if fi < len(blend_faces) else 1
-        if region == 0:  # an untrimmed blend face: a uv grid, parameters known
-            pts, ts, uvs = _grid(face)
-        else:  # trimmed faces: OCCT's tessellation, projected (fast on analytic faces)
-            pts, ts = face.tessellate(deflection)
-            uvs = [face.Surface.parameter(p) for p in pts]
+        # an untrimmed blend face: a uv grid (parameters known, no projection);
+        # trimmed faces: OCCT's tessellation
+        pts, ts, uvs = _grid(face) if region == 0 else tessellation(face, deflection)
         local = []
         for p, uv in zip(pts, uvs):
             key = (fi, round(p.x / tol), round(p.y / tol), round(p.z / tol))
             if key not in index:
-                fr = Frame(face, *uv)
-                k1, k2, _, _ = fr.principal()
+                fr = frame_or_none(face, *uv)
+                k1, k2, _, _ = fr.principal() if fr else (0.0, 0.0, 0.0, 0.0)
+                n = fr.n if fr else Vector(0, 0, 0)  # invalid: the tool skips the vertex
                 index[key] = len(verts)
-                verts.append((p.x, p.y, p.z, fr.n.x, fr.n.y, fr.n.z, k1, k2, region))
+                verts.append((p.x, p.y, p.z, n.x, n.y, n.z, k1, k2, region, int(fr is not None)))
             local.append(index[key])
         tris.extend((local[a], local[b], local[c]) for a, b, c in ts)
     with open(path, "w") as f:
@@ -59,7 +58,7 @@ def write_ply(path, shape, blend_faces, other_faces, deflection):
         f.write("property int region\nproperty int valid\n")
         f.write("element face %d\nproperty list uchar int vertex_indices\nend_header\n" % len(tris))
         for v in verts:
-            f.write("%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d 1\n" % v)
+            f.write("%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d %d\n" % v)
         for t in tris:
             f.write("3 %d %d %d\n" % t)
     return len(verts), len(tris)

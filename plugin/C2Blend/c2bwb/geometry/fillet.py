@@ -18,7 +18,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .rollingball import RollingBallFace, new_faces
-from .trimlines import ROWS, shape_for, side_rows, spec_from_rows
+from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
 
@@ -74,22 +74,15 @@ def check_params(radius, continuity, shape_params, tension, label):
         raise C2BlendError("tension must be a positive number, got %r" % (tension,), label)
 
 
-def sample_rows(rbf, n, nrows, tension):
+def sample_rows(rbf, n, nrows, tension, where):
     """Cross-boundary rows at n corresponding points of a rolling-ball face."""
     (_, f1), (_, f2) = rbf.contacts
     c1, c2 = rbf.across
     sgn = 1.0 if c2 > c1 else -1.0
-    rows0, rows1 = [], []
-    for a in rbf.samples(n):
-        p1, p2 = rbf.point(a, c1), rbf.point(a, c2)
-        s = tension * (p2 - p1).Length
-        r0, _ = side_rows(f1, p1, rbf.derivative(a, c1, True),
-                          rbf.derivative(a, c1, False) * sgn, s, nrows, 1)
-        r1, _ = side_rows(f2, p2, rbf.derivative(a, c2, True),
-                          rbf.derivative(a, c2, False) * -sgn, s, nrows, -1)
-        rows0.append(r0)
-        rows1.append(r1)
-    return rows0, rows1
+    pairs = ((rbf.point(a, c1), rbf.derivative(a, c1, True), rbf.derivative(a, c1, False) * sgn,
+              rbf.point(a, c2), rbf.derivative(a, c2, True), rbf.derivative(a, c2, False) * -sgn)
+             for a in rbf.samples(n))
+    return pair_rows(f1, f2, pairs, nrows, tension, where)
 
 
 class Blended:
@@ -106,7 +99,7 @@ def solve_face(rbf, where, continuity, shape_params, tension, tol_rel, samples, 
     """The PDE blend replacing one rolling-ball face (see bspline.solve_sampled)."""
     nrows = ROWS[continuity]
     blend, n, err = solve_sampled(
-        lambda k: sample_rows(rbf, k, nrows, tension), rbf.closed,
+        lambda k: sample_rows(rbf, k, nrows, tension, where),
         lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, rbf.closed,
                                       "fillet " + where),
         where, samples, max_samples, DATA_REL)

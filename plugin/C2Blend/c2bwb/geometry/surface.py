@@ -85,6 +85,21 @@ def frame_at_point(face, p):
     return Frame(face, u, v)
 
 
+def frame_or_none(face, u, v):
+    """Frame of face at (u, v), or None where the surface is degenerate (a pole)."""
+    try:
+        return Frame(face, u, v)
+    except ValueError:
+        return None
+
+
+def tessellation(face, deflection):
+    """OCCT's tessellation of face: points, triangles, and each point's (u, v) on the
+    surface (by projection: fast on analytic surfaces, milliseconds on B-splines)."""
+    pts, tris = face.tessellate(deflection)
+    return pts, tris, [face.Surface.parameter(p) for p in pts]
+
+
 def angle(a, b):
     """Angle in radians between two vectors, accurate for tiny angles."""
     return math.atan2(a.cross(b).Length, a.dot(b))

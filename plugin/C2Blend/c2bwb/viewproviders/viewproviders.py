@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 from pivy import coin
 
-from ..geometry.surface import Frame
+from ..geometry.surface import frame_or_none, tessellation
 
 ICONS = os.path.join(os.path.dirname(__file__), "..", "..", "resources", "icons")
 
@@ -58,14 +58,11 @@ def curvature_map(shape, quantity="kmax", deflection=None):
     deflection = deflection or shape.BoundBox.DiagonalLength * 1e-3
     coords, idx, vals = [], [], []
     for face in shape.Faces:
-        pts, tris = face.tessellate(deflection)
+        pts, tris, uvs = tessellation(face, deflection)
         base = len(coords)
-        for p in pts:
-            u, v = face.Surface.parameter(p)
-            try:
-                k1, k2, k, h = Frame(face, u, v).principal()
-            except ValueError:
-                k1 = k2 = k = h = 0.0
+        for p, uv in zip(pts, uvs):
+            fr = frame_or_none(face, *uv)
+            k1, k2, k, h = fr.principal() if fr else (0.0, 0.0, 0.0, 0.0)
             vals.append({"kmax": max(abs(k1), abs(k2)), "mean": h, "gauss": k}[quantity])
             coords.append((p.x, p.y, p.z))
         for t in tris:
