@@ -14,7 +14,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .fillet import DATA_REL, check_params
-from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
+from .trimlines import ROWS, pair_rows, spec_from_rows
 
 
 class Trimline:
@@ -82,8 +82,7 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
     Returns (Part.Face, report dict). Raises C2BlendError naming the faces/edges.
     """
     t0 = time.perf_counter()
-    check_params(1.0, continuity, shape_params, tension, names[0])
-    shape_params = shape_for(continuity, shape_params)
+    shape_params = check_params(1.0, continuity, shape_params, tension, names[0])
     t1, t2 = Trimline(face1, edge1, names[0]), Trimline(face2, edge2, names[1])
     align(t1, t2)
     where = "%s -> %s" % names

@@ -60,18 +60,20 @@ def resolve_edges(shape, edges, label):
 
 
 def check_params(radius, continuity, shape_params, tension, label):
-    """Validate the numeric parameters; raise C2BlendError naming the bad one."""
+    """Validate the numeric parameters; raise C2BlendError naming the bad one.
+    Returns the shape parameters for the continuity (see trimlines.shape_for)."""
     if not (isinstance(radius, (int, float)) and math.isfinite(radius) and radius > 0):
         raise C2BlendError("radius must be a positive number, got %r" % (radius,), label,
                            "radius")
     if continuity not in ROWS:
         raise C2BlendError("continuity must be C1, C2 or C3, got %r" % (continuity,), label)
     try:
-        shape_for(continuity, shape_params)
+        shape = shape_for(continuity, shape_params)
     except (TypeError, ValueError) as ex:
         raise C2BlendError("shape_params: %s" % ex, label) from None
     if not (math.isfinite(tension) and tension > 0):
         raise C2BlendError("tension must be a positive number, got %r" % (tension,), label)
+    return shape
 
 
 def sample_rows(rbf, n, nrows, tension, where):
@@ -220,8 +222,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     The input shape is not modified.
     """
     t0 = time.perf_counter()
-    check_params(radius, continuity, shape_params, tension, label)
-    shape_params = shape_for(continuity, shape_params)
+    shape_params = check_params(radius, continuity, shape_params, tension, label)
     names = resolve_edges(shape, edges, label)
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     try:
