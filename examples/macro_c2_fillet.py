@@ -44,7 +44,7 @@ for b in report["blends"]:
              b["poles"][0], b["poles"][1], b["fit_deviation"], b["fit_tolerance"]))
 print("  continuity across the trimlines (%d samples each): %s"
       % (report["trimlines"][0]["samples"], report["verdict"]))
-print("    " + C2Blend.format_report({"edges": report["trimlines"]}).replace("\n", "\n    "))
+print("    " + C2Blend.format_report(report).replace("\n", "\n    "))
 rolling = part.makeFillet(2.0, junction)
 occt_edges = [e for e in rolling.Edges
               if len(rolling.ancestorsOfType(e, Part.Face)) == 2

@@ -1,5 +1,6 @@
 #include "c2b_fit.h"
 
+#include <float.h>
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
@@ -431,12 +432,24 @@ static c2b_status trim_errors(const fit *f, const c2b_blend *b, int nv, const do
         st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
     else
         st = c2b_blend_eval_grid(b, 2, ue, (size_t)nv, v, n - 1, an, err);
+    double pmax = 0; /* largest pole coordinate: the rounding floor of the end rows */
+    for (size_t k = 0; k < 3 * (size_t)f->u.npoles * (size_t)f->v.npoles; k++)
+        pmax = fmax(pmax, fabs(f->poles[k]));
     for (int side = 0; !st && side < 2; side++)
         for (int k = 0; k < n; k++) {
             if (fit_eval_grid(f, 1, &ue[side], k, nv, v, fv)) {
                 st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
                 break;
             }
+            /* d^k/du^k at an end is a difference of the first k + 1 pole rows with
+             * weights summing to 2^k p!/(p-k)! / h^k (h: the end span), so rounding alone
+             * leaves an error of about eps * pmax times that, which no refinement
+             * along v removes. Only the part above this floor counts for refinement. */
+            double h = side ? f->u.b[f->u.nb - 1] - f->u.b[f->u.nb - 2] : f->u.b[1] - f->u.b[0];
+            double amp = 1;
+            for (int i = 0; i < k; i++)
+                amp *= 2.0 * (f->u.p - i) / h;
+            double floor = 16 * DBL_EPSILON * pmax * amp;
             double r = 0;
             for (int j = 0; j < nv; j++) {
                 const double *row = an + ((size_t)side * (size_t)nv + (size_t)j) * nd * 3;
@@ -449,7 +462,7 @@ static c2b_status trim_errors(const fit *f, const c2b_blend *b, int nv, const do
                 r = fmax(r, d);
                 if (ev && scale > 0) {
                     int sv = dir_bspan(&f->v, dir_wrap(&f->v, v[j]));
-                    ev[sv] = fmax(ev[sv], d / scale);
+                    ev[sv] = fmax(ev[sv], fmax(d - floor, 0.0) / scale);
                 }
             }
             if (res)

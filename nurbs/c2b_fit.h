@@ -12,7 +12,10 @@
  * until a dense check grid offset from every site and knot is within tolerance. The
  * end rows S, S_u, ... at u = 0 and 1 are refined along v until each is within 1% of
  * tol_rel of its own magnitude, so the contact with the primaries (position, tangent
- * and curvature) is two orders tighter than the interior deviation.
+ * and curvature) is two orders tighter than the interior deviation. An end row's
+ * k-th derivative is a difference of k + 1 pole rows, amplified by 2^k p!/(p-k)!/h^k
+ * (h: the end span); the rounding error this leaves (16 eps x largest pole coordinate
+ * x that factor) is not counted, since no refinement along v can remove it.
  */
 #ifndef C2B_FIT_H
 #define C2B_FIT_H

@@ -360,5 +360,14 @@ def test_c1_and_c3_fillets():
     solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, continuity="C3")
     assert_valid(solid)
     assert_g2(rep)
+    # closed trimlines: the degree-7 fit's third-derivative end rows sit at the rounding
+    # floor of their pole differences; the fit must still reach 1e-7
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, continuity="C3")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert rep["blends"][0]["closed"] and rep["blends"][0]["fit_deviation"] <= \
+        rep["blends"][0]["fit_tolerance"]
+    lines = C2Blend.format_report(rep).splitlines()
+    assert len(lines) == 2 and all(": G2 " in ln for ln in lines)
     with pytest.raises(C2BlendError, match=r"C3 takes 5 shape parameters \(a0, a1, a2, a3, a4\)"):
         C2Blend.fillet(s, [edge], 2.0, continuity="C3", shape_params=(2, 1, 1, 1))

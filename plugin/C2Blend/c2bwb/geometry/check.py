@@ -138,10 +138,14 @@ def check(shape, edges, samples=101):
 
 
 def format_report(rep):
-    """Human-readable lines for the Report view."""
+    """Human-readable lines for the Report view, of a check report (check()) or of a
+    fillet or blend report (its trimlines and the OCCT faces it kept)."""
     lines = []
-    for r in rep["edges"]:
+    for r in rep["edges"] if "edges" in rep else rep["trimlines"]:
         lines.append("%s (%s): %s  G0 %.2e  G1 %.2e rad  curvature jump %.3g (rel %.2e)"
                      % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g0"], r["g1"],
                         r["g2"], r["g2_rel"]))
+    for k in rep.get("kept_occt_faces", []):
+        lines.append("%s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
+                     % (k["where"], k["reason"]))
     return lines

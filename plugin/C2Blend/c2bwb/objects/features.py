@@ -44,10 +44,7 @@ def params(obj):
 def _publish(obj, rep, header):
     obj.Report = json.dumps(rep, default=float)
     obj.Verdict = rep["verdict"]
-    lines = [header] + ["  " + s for s in ck.format_report({"edges": rep["trimlines"]})]
-    for k in rep.get("kept_occt_faces", []):
-        lines.append("  %s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
-                     % (k["where"], k["reason"]))
+    lines = [header] + ["  " + s for s in ck.format_report(rep)]
     FreeCAD.Console.PrintMessage("\n".join(lines) + "\n")
 
 
