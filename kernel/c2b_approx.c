@@ -10,11 +10,14 @@
 #include "c2b_poly.h"
 
 #define NDATA 3 /* constraints per trimline for C2 */
+#define NPART 3 /* terms per datum: 1 (differential) or 3 (decomposition, see part_eval) */
 
 typedef struct dsol {
     c2b_approx_group group;
     int rank;
     double c[C2B_APPROX_MAX_M];
+    double resid_ss;         /* residual sum of squares of the fit, over resid_n points */
+    long resid_n;
 } dsol;
 
 struct c2b_approx {
@@ -23,10 +26,12 @@ struct c2b_approx {
     c2b_vdata data;
     c2b_approx_options opt;
     double t;
+    double t0;               /* anchor time of the decomposition (the creation time) */
+    double mean0[C2B_NCOMP][2][NDATA]; /* decomposition: mean over v of each datum at t0 */
+    double mean[C2B_NCOMP][2][NDATA];  /* ... and at the current time */
+    int nparts;              /* 1 (differential) or NPART (decomposition) */
     c2b_poly g[2 * NDATA];   /* quintic Hermite basis, thesis eq. 18 / 65 / 107 */
-    dsol sol[C2B_NCOMP][2][NDATA];
-    double resid_ss;         /* residual sum of squares of the last fit */
-    long resid_n;
+    dsol sol[C2B_NCOMP][2][NDATA][NPART];
     /* workspace: collocation tables */
     double *phi;   /* [(NI+1)][4][M]: phi_m^{(0,2,4,6)}(u_i) */
     double *gk;    /* [(NI+1)][4][6]: g_l^{(0,2,4,6)}(u_i) */
@@ -92,8 +97,46 @@ static double grid_v(const c2b_approx *a, int j)
     return a->dom.v0 + (a->dom.v1 - a->dom.v0) * j / a->opt.cj;
 }
 
-/* Classify and solve one datum at time t into *s. */
-static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, double t, dsol *s,
+static const char *const PART_NAME[NPART] = {"constant and t-only part", "v-only part", "(v, t) part"};
+
+/* d^k/dv^k of term `part` of datum l = (c, side, p), f, at (v, t), t being the current
+ * time. Differential approach: the datum itself. Decomposition (thesis eq. 59), with
+ * <C>(t) the mean over v (trapezoid rule on the collocation v's) and t0 the creation time:
+ *   part 0  <C>(t)                                = C^(1) + C^(2)(t)
+ *   part 1  C(v, t0) - <C>(t0)                    = C^(3)(v)
+ *   part 2  C(v, t) - C(v, t0) - <C>(t) + <C>(t0) = C^(4)(v, t)
+ * They sum to C(v, t) for any data. The mean (not the value at one v) makes the split
+ * leave periodic modes such as cos(2 pi v) whole. */
+static double part_eval(const c2b_approx *a, const c2b_vdfunc *f, int c, int side, int p, int part,
+                        int k, double v, double t)
+{
+    if (a->nparts == 1)
+        return f->fn(f->ctx, k, v, t);
+    double m = a->mean[c][side][p], m0 = a->mean0[c][side][p];
+    switch (part) {
+    case 0:
+        return k ? 0.0 : m;
+    case 1:
+        return f->fn(f->ctx, k, v, a->t0) - (k ? 0.0 : m0);
+    default:
+        if (!f->time_dependent)
+            return 0.0;
+        return f->fn(f->ctx, k, v, t) - f->fn(f->ctx, k, v, a->t0) - (k ? 0.0 : m - m0);
+    }
+}
+
+/* Trapezoid mean over the collocation v's of datum f at time t. */
+static double datum_mean(const c2b_approx *a, const c2b_vdfunc *f, double t)
+{
+    const int NJ = a->opt.cj;
+    double sum = 0;
+    for (int j = 0; j <= NJ; j++)
+        sum += (j == 0 || j == NJ ? 0.5 : 1.0) * f->fn(f->ctx, 0, grid_v(a, j), t);
+    return sum / NJ;
+}
+
+/* Classify and solve term `part` of one datum at time t into *s. */
+static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, int part, double t, dsol *s,
                               c2b_error *err)
 {
     const c2b_vdfunc *f = &a->data.f[c][side][p];
@@ -106,8 +149,8 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, double t, d
     for (int j = 0; j <= NJ; j++) {
         double v = grid_v(a, j), *fj = a->fv + 4 * j;
         for (int q = 0; q < 4; q++)
-            fj[q] = f->fn(f->ctx, 2 * q, v, t);
-        double f1 = f->fn(f->ctx, 1, v, t);
+            fj[q] = part_eval(a, f, c, side, p, part, 2 * q, v, t);
+        double f1 = part_eval(a, f, c, side, p, part, 1, v, t);
         for (int q = 0; q < 4; q++)
             if (!isfinite(fj[q]))
                 return c2b_error_set(err, C2B_ERR_SPEC,
@@ -173,13 +216,15 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, double t, d
                                      a->opt.rcond, &rank);
     if (info != 0)
         return c2b_error_set(err, C2B_ERR_NUMERIC,
-                             "thesis-approx: datum %c, side %d, order %d: dgelsy failed (info %d)",
-                             "xyz"[c], side, p, (int)info);
+                             "thesis-approx: datum %c, side %d, order %d%s%s: dgelsy failed (info %d)",
+                             "xyz"[c], side, p, a->nparts > 1 ? ", " : "",
+                             a->nparts > 1 ? PART_NAME[part] : "", (int)info);
     if (rank < M)
         return c2b_error_set(err, C2B_ERR_NUMERIC,
-                             "thesis-approx: datum %c, side %d, order %d: least squares rank %d < M = %d "
+                             "thesis-approx: datum %c, side %d, order %d%s%s: least squares rank %d < M = %d "
                              "(reduce M or refine the collocation grid)",
-                             "xyz"[c], side, p, (int)rank, M);
+                             "xyz"[c], side, p, a->nparts > 1 ? ", " : "",
+                             a->nparts > 1 ? PART_NAME[part] : "", (int)rank, M);
     s->rank = (int)rank;
     for (int m = 0; m < M; m++)
         s->c[m] = a->b[m] / a->cn[m];
@@ -188,26 +233,40 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, double t, d
     for (long r = M; r < rows; r++)
         rs += a->b[r] * a->b[r];
     (void)bnorm;
-    a->resid_ss += rs;
-    a->resid_n += rows;
+    s->resid_ss = rs;
+    s->resid_n = rows;
     return C2B_OK;
 }
 
 static c2b_status solve_all(c2b_approx *a, double t, int only_time_dependent, c2b_error *err)
 {
-    dsol tmp[C2B_NCOMP][2][NDATA];
+    dsol tmp[C2B_NCOMP][2][NDATA][NPART];
+    double mean_prev[C2B_NCOMP][2][NDATA];
     memcpy(tmp, a->sol, sizeof tmp);
-    a->resid_ss = 0;
-    a->resid_n = 0;
+    memcpy(mean_prev, a->mean, sizeof mean_prev);
+    if (a->nparts > 1)
+        for (int c = 0; c < C2B_NCOMP; c++)
+            for (int side = 0; side < 2; side++)
+                for (int p = 0; p < NDATA; p++) {
+                    const c2b_vdfunc *f = &a->data.f[c][side][p];
+                    if (f->fn && (!only_time_dependent || f->time_dependent))
+                        a->mean[c][side][p] = datum_mean(a, f, t);
+                }
     for (int c = 0; c < C2B_NCOMP; c++)
         for (int side = 0; side < 2; side++)
-            for (int p = 0; p < NDATA; p++) {
-                if (only_time_dependent && !a->data.f[c][side][p].time_dependent)
-                    continue;
-                c2b_status st = solve_datum(a, c, side, p, t, &tmp[c][side][p], err);
-                if (st)
-                    return st;
-            }
+            for (int p = 0; p < NDATA; p++)
+                for (int part = 0; part < a->nparts; part++) {
+                    /* a new time changes only time-dependent data, and of the
+                     * decomposition only the parts 0 and 2 */
+                    if (only_time_dependent &&
+                        (!a->data.f[c][side][p].time_dependent || part == 1))
+                        continue;
+                    c2b_status st = solve_datum(a, c, side, p, part, t, &tmp[c][side][p][part], err);
+                    if (st) {
+                        memcpy(a->mean, mean_prev, sizeof mean_prev);
+                        return st;
+                    }
+                }
     memcpy(a->sol, tmp, sizeof tmp);
     a->t = t;
     return C2B_OK;
@@ -242,6 +301,8 @@ c2b_status c2b_approx_create(const double shape[C2B_NCOMP][5], const c2b_vdomain
     a->dom = *dom;
     a->data = *data;
     a->opt = o;
+    a->t0 = t;
+    a->nparts = o.approach == C2B_APPROX_DECOMPOSITION ? NPART : 1;
     c2b_status st = c2b_poly_hermite(NDATA, a->g, err);
     if (st) {
         c2b_approx_destroy(a);
@@ -270,6 +331,12 @@ c2b_status c2b_approx_create(const double shape[C2B_NCOMP][5], const c2b_vdomain
                 a->gk[(size_t)i * 24 + q * 6 + l] = poly_d(&a->g[l], 2 * q, u);
         }
     }
+    if (a->nparts > 1)
+        for (int c = 0; c < C2B_NCOMP; c++)
+            for (int side = 0; side < 2; side++)
+                for (int p = 0; p < NDATA; p++)
+                    if (a->data.f[c][side][p].fn)
+                        a->mean0[c][side][p] = datum_mean(a, &a->data.f[c][side][p], t);
     st = solve_all(a, t, 0, err);
     if (st) {
         c2b_approx_destroy(a);
@@ -293,8 +360,9 @@ c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u,
         return c2b_error_set(err, C2B_ERR_ARG, "c2b_approx_eval_grid: NULL buffer or order outside 0..2");
     const int nd = (order + 1) * (order + 2) / 2, M = a->opt.M;
     const int nk = order + 1; /* u- and v-derivatives 0..order */
-    double *hu = malloc(sizeof(double) * (nu ? nu : 1) * C2B_NCOMP * 6 * nk);
-    double *fvv = malloc(sizeof(double) * (nv ? nv : 1) * C2B_NCOMP * 6 * nk);
+    const int nt = 6 * a->nparts; /* terms per component: datum l, part q at l * nparts + q */
+    double *hu = malloc(sizeof(double) * (nu ? nu : 1) * C2B_NCOMP * nt * nk);
+    double *fvv = malloc(sizeof(double) * (nv ? nv : 1) * C2B_NCOMP * nt * nk);
     if (!hu || !fvv) {
         free(hu);
         free(fvv);
@@ -313,23 +381,27 @@ c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u,
             for (int k = 0; k < nk; k++)
                 ph[m][k] = phi_deriv(a->g, m + 1, k, u[i]);
         for (int c = 0; c < C2B_NCOMP; c++)
-            for (int l = 0; l < 6; l++) {
-                const dsol *s = &a->sol[c][l / NDATA][l % NDATA];
+            for (int e = 0; e < nt; e++) {
+                int l = e / a->nparts;
+                const dsol *s = &a->sol[c][l / NDATA][l % NDATA][e % a->nparts];
                 for (int k = 0; k < nk; k++) {
                     double h = gd[l][k];
                     if (s->group >= C2B_APPROX_MODE)
                         for (int m = 0; m < M; m++)
                             h -= s->c[m] * ph[m][k];
-                    hu[((i * C2B_NCOMP + c) * 6 + l) * nk + k] = s->group ? h : 0.0;
+                    hu[((i * C2B_NCOMP + c) * nt + e) * nk + k] = s->group ? h : 0.0;
                 }
             }
     }
     for (size_t j = 0; j < nv; j++)
         for (int c = 0; c < C2B_NCOMP; c++)
-            for (int l = 0; l < 6; l++) {
+            for (int e = 0; e < nt; e++) {
+                int l = e / a->nparts;
                 const c2b_vdfunc *f = &a->data.f[c][l / NDATA][l % NDATA];
                 for (int k = 0; k < nk; k++)
-                    fvv[((j * C2B_NCOMP + c) * 6 + l) * nk + k] = f->fn ? f->fn(f->ctx, k, v[j], a->t) : 0.0;
+                    fvv[((j * C2B_NCOMP + c) * nt + e) * nk + k] =
+                        f->fn ? part_eval(a, f, c, l / NDATA, l % NDATA, e % a->nparts, k, v[j], a->t)
+                              : 0.0;
             }
     static const int du[6] = {0, 1, 0, 2, 1, 0}, dv[6] = {0, 0, 1, 0, 1, 2};
     for (size_t i = 0; i < nu; i++)
@@ -338,9 +410,9 @@ c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u,
             for (int e = 0; e < nd; e++)
                 for (int c = 0; c < C2B_NCOMP; c++) {
                     double sum = 0;
-                    const double *h = hu + (i * C2B_NCOMP + c) * 6 * nk;
-                    const double *f = fvv + (j * C2B_NCOMP + c) * 6 * nk;
-                    for (int l = 0; l < 6; l++)
+                    const double *h = hu + (i * C2B_NCOMP + c) * (size_t)nt * nk;
+                    const double *f = fvv + (j * C2B_NCOMP + c) * (size_t)nt * nk;
+                    for (int l = 0; l < nt; l++)
                         sum += h[l * nk + du[e]] * f[l * nk + dv[e]];
                     o[e * 3 + c] = sum;
                 }
@@ -350,12 +422,13 @@ c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u,
     return C2B_OK;
 }
 
-c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, double *coef,
-                                  int *rank)
+c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, int part,
+                                  double *coef, int *rank)
 {
-    if (!a || c < 0 || c >= C2B_NCOMP || side < 0 || side > 1 || p < 0 || p >= NDATA)
+    if (!a || c < 0 || c >= C2B_NCOMP || side < 0 || side > 1 || p < 0 || p >= NDATA ||
+        part < 0 || part >= a->nparts)
         return C2B_APPROX_ZERO;
-    const dsol *s = &a->sol[c][side][p];
+    const dsol *s = &a->sol[c][side][p][part];
     if (coef)
         for (int m = 0; m < a->opt.M; m++)
             coef[m] = s->group >= C2B_APPROX_MODE ? s->c[m] : 0.0;
@@ -366,5 +439,15 @@ c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, d
 
 double c2b_approx_residual_rms(const c2b_approx *a)
 {
-    return a && a->resid_n ? sqrt(a->resid_ss / (double)a->resid_n) : 0.0;
+    if (!a)
+        return 0.0;
+    double ss = 0;
+    long n = 0;
+    for (int c = 0; c < C2B_NCOMP; c++)
+        for (int l = 0; l < 2 * NDATA; l++)
+            for (int part = 0; part < a->nparts; part++) {
+                ss += a->sol[c][l / NDATA][l % NDATA][part].resid_ss;
+                n += a->sol[c][l / NDATA][l % NDATA][part].resid_n;
+            }
+    return n ? sqrt(ss / (double)n) : 0.0;
 }

@@ -14,9 +14,13 @@
  *    so the boundary data hold exactly. Data with C_l'' = beta C_l (group 2) are
  *    detected and reported, but solved with eq. 120 as the thesis does for its Tables 1
  *    and 3 (their closed form is what c2b_blend computes).
- *  - C2B_APPROX_DECOMPOSITION (section 3.3, eqs. 59-86): constants and functions of t
- *    only (C^(1), C^(2)) take g_l (eqs. 64, 69); functions of v and of (v, t) (C^(3),
- *    C^(4)) take the same trial function (eqs. 73, 85).
+ *  - C2B_APPROX_DECOMPOSITION (section 3.3, eqs. 59-86): every datum is split into
+ *    C^(1) + C^(2)(t) + C^(3)(v) + C^(4)(v, t) (eq. 59), with <C>(t) the mean over v
+ *    and t0 the creation time: part 0 = <C>(t) (constants and t-only, eqs. 64, 69)
+ *    takes g_l exactly; part 1 = C(v, t0) - <C>(t0) (eq. 73) and part 2, the rest (eq. 85),
+ *    each take the eq. 120 trial function with their own c_m (a part that is
+ *    identically zero takes no term). A datum such as h + sin(2 pi v) thus keeps its
+ *    constant h exact instead of spreading the sine series over it.
  * The c_m minimise the squared PDE residual (eq. 117) at the (I+1) x (J+1) uniform
  * points u_i = i/I, v_j = v0 + j (v1 - v0)/J (eq. 124). The thesis solves the normal
  * equations (eq. 125); here the overdetermined system itself is solved by LAPACK's
@@ -99,12 +103,13 @@ c2b_status c2b_approx_set_time(c2b_approx *a, double t, c2b_error *err);
 c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u, size_t nv,
                                 const double *v, int order, double *out, c2b_error *err);
 
-/** The treatment of datum (component c, side, order p) and, for least-squares data,
- *  the coefficients c_1..c_M (coef may be NULL; it receives M values, zeros otherwise)
- *  and the numerical rank (rank may be NULL). Returns C2B_APPROX_ZERO for indices out
- *  of range. */
-c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, double *coef,
-                                  int *rank);
+/** The treatment of term `part` of datum (component c, side, order p) and, for
+ *  least-squares terms, the coefficients c_1..c_M (coef may be NULL; it receives M
+ *  values, zeros otherwise) and the numerical rank (rank may be NULL). part is 0 in
+ *  the differential approach and 0..2 (constant and t-only, v-only, (v, t)) in the
+ *  decomposition. Returns C2B_APPROX_ZERO for indices out of range. */
+c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, int part,
+                                  double *coef, int *rank);
 
 /** Root-mean-square PDE residual over the collocation grid after the fit, summed over
  *  all least-squares data, in model units (0 when every datum is exact). */

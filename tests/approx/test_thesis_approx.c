@@ -136,9 +136,9 @@ int main(void)
             return 1;
         /* groups: z constants are Hermite, x/y sin/cos are modes solved by eq. 120 */
         int rank = 0;
-        check_true("z data are group 1 (Hermite)", c2b_approx_datum(a20, 2, 0, 0, NULL, NULL) == C2B_APPROX_HERMITE);
+        check_true("z data are group 1 (Hermite)", c2b_approx_datum(a20, 2, 0, 0, 0, NULL, NULL) == C2B_APPROX_HERMITE);
         check_true("x data are group 2 (f'' = beta f), solved by eq. 120",
-                   c2b_approx_datum(a20, 0, 0, 0, NULL, &rank) == C2B_APPROX_MODE && rank == 20);
+                   c2b_approx_datum(a20, 0, 0, 0, 0, NULL, &rank) == C2B_APPROX_MODE && rank == 20);
         /* boundary constraints exact: S, S_u, S_uu at u = 0, 1 */
         double ub[2] = {0, 1}, vb[NG], d[2 * NG * 6 * 3], worst = 0;
         ex_linspace(NG, 0, 1, vb);
@@ -171,6 +171,29 @@ int main(void)
         errors_for(&x, ref, u, v, 20, C2B_APPROX_DECOMPOSITION, d20, NULL);
         check_close("decomposition M = 10 equals differential", d10[3], e10[3], 1e-10, 0);
         check_close("decomposition M = 20 equals differential", d20[3], e20[3], 1e-8, 1e-18);
+        /* decomposition in time: after set_time the (v, t) part carries F(v) (e^t - e^t0);
+         * it is proportional to the v part, so the sum equals a fresh solve at the new t */
+        {
+            c2b_approx_options od = c2b_approx_options_default();
+            od.approach = C2B_APPROX_DECOMPOSITION;
+            c2b_approx *moved = NULL, *fresh2 = NULL;
+            int okd = !c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, &od, &moved, &err) &&
+                      !c2b_approx_set_time(moved, x.t + 0.3, &err) &&
+                      !c2b_approx_create(x.shape, &x.dom, &x.vd, x.t + 0.3, &od, &fresh2, &err);
+            if (check_true("decomposition: create, set_time", okd)) {
+                check_true("the (v, t) part of x is a least-squares term after set_time",
+                           c2b_approx_datum(moved, 0, 0, 0, 2, NULL, NULL) >= C2B_APPROX_MODE &&
+                               c2b_approx_datum(fresh2, 0, 0, 0, 2, NULL, NULL) == C2B_APPROX_ZERO);
+                double q1[3 * 3 * 3], q2[3 * 3 * 3], us[3] = {0.1, 0.5, 0.8}, vs[3] = {0.05, 0.37, 0.9}, w = 0;
+                c2b_approx_eval_grid(moved, 3, us, 3, vs, 0, q1, &err);
+                c2b_approx_eval_grid(fresh2, 3, us, 3, vs, 0, q2, &err);
+                for (int i = 0; i < 27; i++)
+                    w = fmax(w, fabs(q1[i] - q2[i]));
+                check_le("decomposition: set_time equals a fresh solve", w, 1e-12);
+            }
+            c2b_approx_destroy(moved);
+            c2b_approx_destroy(fresh2);
+        }
         c2b_blend_destroy(b);
         c2b_spec_destroy(sp);
     }
