@@ -25,6 +25,33 @@ def shaft_on_plate():
     raise AssertionError("no junction edge")
 
 
+def split_shaft_on_plate():
+    """shaft_on_plate with the shaft made of two half cylinders: the junction circle is
+    two edges, so OCCT's fillet is two rolling-ball faces joined end to end (a closed
+    tangent chain). Returns (solid, [names of the two junction edges])."""
+    plate = Part.makeBox(40, 40, 5, V(-20, -20, -5))
+    half = Part.makeCylinder(5, 20, V(0, 0, 0), V(0, 0, 1), 180)
+    shaft = half.fuse(half.rotated(V(0, 0, 0), V(0, 0, 1), 180)).removeSplitter()
+    s = plate.fuse(shaft)
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z) < 1e-9
+             and abs(e.Curve.Radius - 5) < 1e-9]
+    assert len(names) == 2, names
+    return s, names
+
+
+def pipe_tee():
+    """A pipe r = 3 along x joining a pipe r = 5 along z; returns (solid, names of the
+    two edges of their intersection curve, which OCCT splits at the seams)."""
+    s = Part.makeCylinder(5, 40, V(0, 0, -20)).fuse(
+        Part.makeCylinder(3, 20, V(0, 0, 0), V(1, 0, 0))).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if len(s.ancestorsOfType(e, Part.Face)) == 2 and e.BoundBox.XMin > 2
+             and e.BoundBox.XMax < 6 and isinstance(e.Curve, Part.BSplineCurve)]
+    assert len(names) == 2, names
+    return s, names
+
+
 def loft():
     """Lofted solid (B-spline side face) through circles r = 10, 6, 8 at z = 0, 10, 20;
     returns (solid, name of the top edge between the B-spline face and the top plane)."""

@@ -94,6 +94,36 @@ def test_loft_bspline_plane():
     assert all(r["g2_rel"] > 0.1 for r in occt["edges"])
 
 
+# tangent chains ------------------------------------------------------------------------
+def test_closed_chain_of_two_edges():
+    """The junction circle split into two edges: OCCT makes two rolling-ball faces that
+    join each other tangentially; they become one closed blend, G2 all round."""
+    s, names = shapes.split_shaft_on_plate()
+    solid, rep = C2Blend.fillet_report(s, names, 2.0, label="Split")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    assert len(rep["blends"]) == 1 and rep["blends"][0]["closed"]
+    assert set(rep["blends"][0]["where"].split(", ")) == {"Split." + n for n in names}
+    occt, _ = occt_jump(s, names, 2.0)
+    for r in occt["edges"]:
+        assert abs(r["g2"] - 0.5) < 1e-9  # torus meridian 1/R against plane / cylinder
+
+
+def test_chain_on_approximate_rolling_ball_is_kept():
+    """A pipe tee: OCCT's rolling-ball surface is a B-spline approximation (tolerance
+    ~5e-5), too rough for exact G2 data; its faces are kept, said so, and the verdict
+    is G1, never G2. The solid is still valid."""
+    s, names = shapes.pipe_tee()
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Tee")
+    assert_valid(solid)
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    assert "approximation" in rep["kept_occt_faces"][0]["reason"]
+    assert rep["verdict"] == "G1"
+    assert any("kept OCCT's rolling-ball face" in ln
+               for ln in C2Blend.format_report(rep).splitlines())
+
+
 # 4. blend faces between coaxial cylinders -----------------------------------------------
 def coaxial():
     a, b = Part.makeCylinder(1, 2), Part.makeCylinder(0.8, 2, V(0, 0, 3))
@@ -230,9 +260,10 @@ def resonant_rho(shape, edge):
     eigenvalue mu = 2 pi (found independently, by the smallest singular value of its
     6 x 6 boundary matrix), and the mode cos(2 pi v / L) then needs rho = -L^6."""
     res = shape.makeFillet(2.0, [shape.getElement(edge)])
-    from c2bwb.geometry.rollingball import RollingBallFace, new_faces
+    from c2bwb.geometry.rollingball import RollingBallFace, chains, new_faces
     ff = new_faces(shape, res)
-    rows0, rows1 = fl.sample_rows(RollingBallFace(res, ff[0], ff), 32, 3, 1.0, "test")
+    chain, = chains([RollingBallFace(res, f, ff) for f in ff])
+    rows0, rows1 = fl.sample_rows(chain, 32, 3, 1.0, "test")
     return -trimlines.v_length(rows0, rows1, True) ** 6
 
 

@@ -2,12 +2,16 @@
 """G2 fillets on solids (issue 5, MATH.md section 7).
 
 Route: OCCT's rolling-ball fillet of the same radius gives trimlines (its contact edges)
-and corresponding points (its cross-sections). Each rolling-ball face whose two contact
-edges border unfilleted faces is replaced by the PDE blend with G2 cross-boundary data
-from those faces, fitted as a B-spline face; planar faces at the fillet's ends get the
-blend's end curve as their new boundary; everything is sewn into a solid and checked
-(BRepCheck, and continuity along every trimline). OCCT corner patches, where
-fillets meet at a vertex, are kept and reported as such: no G2 claim is made there.
+and corresponding points (its cross-sections). Rolling-ball faces that join each other
+tangentially end to end (a tangent chain of edges, or an edge OCCT split at a seam) form
+one chain. Each chain whose two sides border one unfilleted face each is replaced by
+one PDE blend with G2 cross-boundary data from those faces, sampled uniformly in arc
+length and fitted as a B-spline face; planar faces at the fillet's ends get the blend's
+end curve as their new boundary; everything is sewn into a solid and checked
+(BRepCheck, and continuity along every trimline). Kept as OCCT made them, and reported
+as such with the reason (no G2 claim is made there): corner patches where fillets meet
+at a vertex, chains whose side changes face, ends on non-planar faces, and rolling-ball
+surfaces that OCCT only approximates too roughly for exact G2 data (RoughTrimlines).
 """
 import math
 import time
@@ -17,10 +21,15 @@ import Part
 from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
-from .rollingball import RollingBallFace, new_faces
+from .rollingball import RollingBallFace, chains, new_faces
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
+DATA_KEEP = 1e-6  # above this, the trimlines are too rough for a G2 blend: keep OCCT's face
+
+
+class RoughTrimlines(Exception):
+    """The rolling-ball trimlines are not smooth enough for an exact G2 blend."""
 
 
 def resolve_edges(shape, edges, label):
@@ -76,37 +85,37 @@ def check_params(radius, continuity, shape_params, tension, label):
     return shape
 
 
-def sample_rows(rbf, n, nrows, tension, where):
-    """Cross-boundary rows at n corresponding points of a rolling-ball face."""
-    (_, f1), (_, f2) = rbf.contacts
-    c1, c2 = rbf.across
-    sgn = 1.0 if c2 > c1 else -1.0
-    pairs = ((rbf.point(a, c1), rbf.derivative(a, c1, True), rbf.derivative(a, c1, False) * sgn,
-              rbf.point(a, c2), rbf.derivative(a, c2, True), rbf.derivative(a, c2, False) * -sgn)
-             for a in rbf.samples(n))
-    return pair_rows(f1, f2, pairs, nrows, tension, where)
+def sample_rows(chain, n, nrows, tension, where):
+    """Cross-boundary rows at n corresponding points of a rolling-ball chain."""
+    return pair_rows(chain.sides[0], chain.sides[1], chain.section_pairs(n), nrows, tension,
+                     where)
 
 
 class Blended:
-    """A rolling-ball face replaced by a PDE blend: surface, face, fit and data facts."""
+    """A rolling-ball chain replaced by a PDE blend: surface, face, fit and data facts."""
 
-    def __init__(self, rbf, where, surface, fit, samples, data_rel):
-        self.rbf, self.where, self.surface, self.fit = rbf, where, surface, fit
+    def __init__(self, chain, where, surface, fit, samples, data_rel):
+        self.chain, self.where, self.surface, self.fit = chain, where, surface, fit
         self.samples, self.data_rel = samples, data_rel
         self.face = Part.Face(surface)
         self.v_range = surface.bounds()[2:4]
 
 
-def solve_face(rbf, where, continuity, shape_params, tension, tol_rel, samples, max_samples):
-    """The PDE blend replacing one rolling-ball face (see bspline.solve_sampled)."""
+def solve_face(chain, where, continuity, shape_params, tension, tol_rel, samples, max_samples):
+    """The PDE blend replacing one rolling-ball chain (see bspline.solve_sampled)."""
     nrows = ROWS[continuity]
     blend, n, err = solve_sampled(
-        lambda k: sample_rows(rbf, k, nrows, tension, where),
-        lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, rbf.closed,
+        lambda k: sample_rows(chain, k, nrows, tension, where),
+        lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
                                       "fillet " + where),
         where, samples, max_samples, DATA_REL)
+    if err > DATA_KEEP:
+        raise RoughTrimlines(
+            "OCCT's rolling-ball surface here is an approximation (face tolerance %.1e); the "
+            "boundary data sampled from it converge only to %.1e (relative) with %d samples, "
+            "too rough for an exact G2 blend" % (max(f.Tolerance for f in chain.faces), err, n))
     surface, fit = fit_surface(blend, tol_rel, where)
-    return Blended(rbf, where, surface, fit, n, err)
+    return Blended(chain, where, surface, fit, n, err)
 
 
 def _replace_edges(face, swaps):
@@ -123,11 +132,11 @@ def assemble(result, blended, where):
     planar end faces re-bounded; sewn, made a solid and checked. Raises C2BlendError."""
     swaps = {}  # planar end face index -> [(old edge, new edge)]
     faces_out = []
-    drop = [b.rbf.face for b in blended]
+    drop = [f for b in blended for f in b.chain.faces]
     for b in blended:
         v0, v1 = b.v_range
         ends = {v: b.surface.value(0.5, v) for v in (v0, v1)}
-        for e, plane in b.rbf.ends:
+        for e, plane in b.chain.ends:
             mid = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
             v = min(ends, key=lambda x: (ends[x] - mid).Length)
             new = Part.Edge(b.surface.vIso(v))
@@ -165,9 +174,9 @@ def assemble(result, blended, where):
     return solid
 
 
-def _where(label, names, rbf):
-    """Names of the selected edges nearest to a rolling-ball face, for messages."""
-    d = [(rbf.face.distToShape(e)[0], n) for n, e in names]
+def _where(label, names, chain):
+    """Names of the selected edges nearest to a rolling-ball chain, for messages."""
+    d = [(min(f.distToShape(e)[0] for f in chain.faces), n) for n, e in names]
     best = min(x for x, _ in d)
     return ", ".join("%s.%s" % (label, n) for x, n in d if x <= best + 1e-9 * (1 + best))
 
@@ -239,14 +248,16 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     t_occt = time.perf_counter() - t0
     fillet_faces = new_faces(shape, result)
     blended, kept = [], []
-    for f in fillet_faces:
-        rbf = RollingBallFace(result, f, fillet_faces)
-        where = _where(label, names, rbf)
-        if rbf.corner:
-            kept.append({"where": where, "reason": rbf.corner})
+    for chain in chains([RollingBallFace(result, f, fillet_faces) for f in fillet_faces]):
+        where = _where(label, names, chain)
+        if chain.corner:
+            kept.append({"where": where, "reason": chain.corner})
             continue
-        blended.append(solve_face(rbf, where, continuity, shape_params, tension, tol_rel,
-                                  samples, max_samples))
+        try:
+            blended.append(solve_face(chain, where, continuity, shape_params, tension, tol_rel,
+                                      samples, max_samples))
+        except RoughTrimlines as ex:
+            kept.append({"where": where, "reason": str(ex)})
     t_solve = time.perf_counter()
     solid = assemble(result, blended, where_all) if blended else (
         result.Solids[0] if len(result.Solids) == 1 else result)
@@ -258,7 +269,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "blends": [{"where": b.where, "samples": b.samples, "data_error": b.data_rel,
                     "fit_deviation": b.fit["deviation"], "fit_tolerance": b.fit["tolerance"],
                     "poles": list(b.fit["poles"].shape[:2]),
-                    "closed": b.rbf.closed} for b in blended],
+                    "closed": b.chain.closed} for b in blended],
         "kept_occt_faces": kept,
         "trimlines": checks,
         "volume": solid.Volume, "occt_volume": result.Volume,

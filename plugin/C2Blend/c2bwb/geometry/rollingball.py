@@ -3,9 +3,15 @@
 
 OCCT's fillet (BRepFilletAPI_MakeFillet, via Shape.makeFillet) gives, for each filleted
 edge, a face whose two contact edges are the trimlines on the adjacent faces and whose
-cross-sections (iso-curves across) join corresponding points. This module finds those
-faces in the result, classifies their edges, and samples corresponding points.
+cross-sections (iso-curves across) join corresponding points. OCCT makes one such face
+per edge of a tangent chain and splits closed edges at seams; faces that join each other
+tangentially across a cross-section form one chain (FilletChain), which becomes one
+blend. This module finds those faces in the result, classifies their edges, orders the
+chains and samples corresponding points uniformly in arc length.
 """
+import bisect
+import math
+
 import Part
 
 from .surface import frame_at_point, angle
@@ -60,13 +66,14 @@ class RollingBallFace:
 
     Attributes: face; contacts: [(edge, neighbour face), (edge, neighbour face)];
     ends: [(edge, neighbour face)] (empty for a closed fillet); seams: [edge];
+    links: [(edge, fillet face)], tangent joins to other rolling-ball faces of a chain;
     corner: None, or a string saying why the face cannot be replaced (corner patch).
     along: 0 or 1, the surface parameter along the fillet; across: (c1, c2).
     """
 
     def __init__(self, result, face, fillet_faces):
         self.face = face
-        self.contacts, self.ends, self.seams = [], [], []
+        self.contacts, self.ends, self.seams, self.links = [], [], [], []
         self.corner = None
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
@@ -77,15 +84,20 @@ class RollingBallFace:
             p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
             tangent = angle(frame_at_point(face, p).n, frame_at_point(nb, p).n) < TANGENT_ANGLE
             is_fillet = any(nb.isSame(g) for g in fillet_faces)
-            if is_fillet:
-                self.corner = "it meets another fillet or corner patch of OCCT"
-            if tangent and not is_fillet:
+            if is_fillet and tangent:
+                self.links.append((e, nb))
+            elif is_fillet:
+                self.corner = "it meets another fillet or corner patch of OCCT at an angle"
+            elif tangent:
                 self.contacts.append((e, nb))
             else:
                 self.ends.append((e, nb))
         if self.corner is None and len(self.contacts) != 2:
             self.corner = ("it has %d tangent contact edges instead of 2 (a corner patch)"
                            % len(self.contacts))
+        if self.corner is None:
+            self.corner = next(("it meets another fillet along a contact edge (a corner patch)"
+                                for e, _ in self.links if any(e.isSame(c) for c, _ in self.contacts)), None)
         if self.corner is None:
             for e, nb in self.ends:
                 if not nb.Surface.isPlanar():
@@ -120,10 +132,154 @@ class RollingBallFace:
         du = 1 if (self.along == 0) == along else 0
         return self.face.Surface.getDN(*((a, c) if self.along == 0 else (c, a)), du, 1 - du)
 
-    def samples(self, n):
-        """n along-parameters: uniform, end point excluded when the fillet is closed."""
+    def along_at(self, edge):
+        """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
+        lies, or None when it lies inside the range."""
+        p = edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
+        a = self.face.Surface.parameter(p)[self.along]
         a0, a1 = self.range
-        if self.closed:
-            return [a0 + (a1 - a0) * k / n for k in range(n)]
-        return [a0 + (a1 - a0) * k / (n - 1) for k in range(n)]
+        end = min((a0, a1), key=lambda x: abs(x - a))
+        return end if abs(end - a) < 1e-6 * (1 + abs(a1 - a0)) else None
+
+
+# 5-point Gauss-Legendre nodes and weights on [0, 1]
+_GL = [(0.5 - 0.5 * x, 0.5 * w) for x, w in (
+    (-0.9061798459386640, 0.2369268850561891), (-0.5384693101056831, 0.4786286704993665),
+    (0.0, 0.5688888888888889), (0.5384693101056831, 0.4786286704993665),
+    (0.9061798459386640, 0.2369268850561891))]
+
+
+class _Section:
+    """One member of a chain, run from along-parameter a_start to a_end, with the
+    across-parameters of side 1 and side 2 and the arc length of its mid-line."""
+    SUB = 32  # Gauss subintervals for the arc-length table
+
+    def __init__(self, rbf, a_start, a_end, c1, c2):
+        self.rbf, self.a_start, self.a_end, self.c1, self.c2 = rbf, a_start, a_end, c1, c2
+        self.cm = 0.5 * (c1 + c2)
+        self.table = [0.0]
+        for i in range(self.SUB):
+            self.table.append(self.table[-1] + self._length(i / self.SUB, (i + 1) / self.SUB))
+        self.length = self.table[-1]
+
+    def along(self, t):
+        return self.a_start + t * (self.a_end - self.a_start)
+
+    def _speed(self, t):
+        return self.rbf.derivative(self.along(t), self.cm, True).Length * abs(self.a_end - self.a_start)
+
+    def _length(self, t0, t1):
+        return (t1 - t0) * sum(w * self._speed(t0 + (t1 - t0) * x) for x, w in _GL)
+
+    def at_length(self, s):
+        """The along-parameter at arc length s from the start (Newton on the Gauss
+        arc length, so the samples are a smooth function of s)."""
+        i = min(max(bisect.bisect_right(self.table, s) - 1, 0), self.SUB - 1)
+        t0 = i / self.SUB
+        t = t0 + (s - self.table[i]) / max(self.table[i + 1] - self.table[i], 1e-300) / self.SUB
+        for _ in range(8):
+            step = (self.table[i] + self._length(t0, t) - s) / self._speed(t)
+            t -= step
+            if abs(step) < 1e-15:
+                break
+        return self.along(t)
+
+
+class FilletChain:
+    """Rolling-ball faces joined tangentially end to end: one blend.
+
+    Attributes: faces; ends: [(edge, neighbour face)]; closed; sides: (F1, F2), the
+    faces touched along side 1 and side 2; corner: None or why the chain is kept;
+    sections: the members in order with their direction (when corner is None).
+    """
+
+    def __init__(self, members):
+        self.members = members
+        self.faces = [m.face for m in members]
+        self.ends = [x for m in members for x in m.ends]
+        self.closed = not self.ends
+        self.corner = next((m.corner for m in members if m.corner), None)
+        if self.corner is None:
+            self.corner = self._order()
+
+    def _order(self):
+        """Order the members into sections; returns why this cannot be done, or None."""
+        first = self.members[0]
+        self.sides = (first.contacts[0][1], first.contacts[1][1])
+        cs = {}
+        for m in self.members:
+            n0, n1 = m.contacts[0][1], m.contacts[1][1]
+            if n0.isSame(self.sides[0]) and n1.isSame(self.sides[1]):
+                cs[id(m)] = m.across
+            elif n0.isSame(self.sides[1]) and n1.isSame(self.sides[0]):
+                cs[id(m)] = m.across[::-1]
+            else:
+                return ("the fillet chain runs along different faces on one side; one blend "
+                        "needs one face on each side")
+        ends = {}  # (member, along end) -> (other member, its along end)
+        for m in self.members:
+            for e, nb in m.links:
+                o = next(x for x in self.members if x.face.isSame(nb))
+                a, b = m.along_at(e), o.along_at(e)
+                if a is None or b is None:
+                    return "it meets another fillet inside its range (a corner patch)"
+                ends[(id(m), a)] = (o, b)
+        start = first
+        a_in = first.range[0]
+        if not self.closed:
+            loose = [(m, a) for m in self.members for a in m.range if (id(m), a) not in ends]
+            if len(loose) != 2:
+                return "the fillet chain has %d free ends instead of 2" % len(loose)
+            start, a_in = loose[0]
+        self.sections, m, a = [], start, a_in
+        while True:
+            a_out = m.range[1] if a == m.range[0] else m.range[0]
+            self.sections.append(_Section(m, a, a_out, *cs[id(m)]))
+            nxt = ends.get((id(m), a_out))
+            if nxt is None or (nxt[0] is start and nxt[1] == a_in):
+                break
+            if len(self.sections) > len(self.members):
+                return "the fillet chain does not close up"
+            m, a = nxt
+        if len(self.sections) != len(self.members):
+            return "the rolling-ball faces do not form one chain"
+        if self.closed and len(self.members) > 1 and \
+                ends.get((id(m), self.sections[-1].a_end), (None,))[0] is not start:
+            return "the fillet chain does not close up"
+        self.length = sum(sec.length for sec in self.sections)
+        return None
+
+    def samples(self, n):
+        """n (section, along-parameter) pairs uniform in the mid-line's arc length, the
+        end point excluded when the chain is closed."""
+        out, acc, k = [], 0.0, 0
+        span = self.length / (n if self.closed else n - 1)
+        for j, sec in enumerate(self.sections):
+            last = j == len(self.sections) - 1
+            while k < n:
+                s = k * span - acc
+                if s > sec.length and not last:
+                    break
+                out.append((sec, sec.at_length(min(s, sec.length))))
+                k += 1
+            acc += sec.length
+        return out
+
+    def section_pairs(self, n):
+        """Per sample: (p1, tangent1, towards1, p2, tangent2, towards2) on sides 1 and 2,
+        as trimlines.pair_rows takes them."""
+        for sec, a in self.samples(n):
+            r, sgn = sec.rbf, (1.0 if sec.c2 > sec.c1 else -1.0)
+            yield (r.point(a, sec.c1), r.derivative(a, sec.c1, True), r.derivative(a, sec.c1, False) * sgn,
+                   r.point(a, sec.c2), r.derivative(a, sec.c2, True), r.derivative(a, sec.c2, False) * -sgn)
+
+
+def chains(rbfs):
+    """Group RollingBallFaces into FilletChains by their tangent links."""
+    groups = []
+    for r in rbfs:
+        linked = [g for g in groups if any(nb.isSame(m.face) for m in g for _, nb in r.links)]
+        merged = [r] + [m for g in linked for m in g]
+        groups = [g for g in groups if not any(g is x for x in linked)] + [merged]
+    return [FilletChain(g) for g in groups]
 
