@@ -94,6 +94,23 @@ def test_loft_bspline_plane():
     assert all(r["g2_rel"] > 0.1 for r in occt["edges"])
 
 
+def test_cone_on_plate():
+    """Cone on a plate: both faces are straight across the trimlines, so S_uu is zero up
+    to rounding on both sides; the data error must not be measured against that noise
+    (it once made this fillet look too rough and kept OCCT's face)."""
+    s = Part.makeCone(6, 3, 8).fuse(Part.makeBox(30, 30, 3, V(-15, -15, -3))).removeSplitter()
+    edge = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z) < 1e-9
+                and abs(e.Curve.Radius - 6) < 1e-9)
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.5, label="Cone")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    occt, _ = occt_jump(s, [edge], 1.5)
+    for r in occt["edges"]:
+        assert abs(r["g2"] - 1 / 1.5) < 1e-9  # torus section 1/R against plane and cone line
+
+
 # tangent chains ------------------------------------------------------------------------
 def test_closed_chain_of_two_edges():
     """The junction circle split into two edges: OCCT makes two rolling-ball faces that

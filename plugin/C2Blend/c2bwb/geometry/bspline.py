@@ -35,13 +35,19 @@ def fit_surface(blend, tol_rel, where):
 
 def data_error(blend):
     """Largest truncation error of the blend's boundary data, relative to the scale of
-    the same datum (S, S_u, ...) over the three components."""
+    the same datum (S, S_u, ...) over the three components. The scale of S_uu and
+    higher is at least that of S_u on the same side (all are lengths: u is
+    dimensionless), so data that vanish across a straight face (zero normal
+    curvature: S_uu is rounding noise) are not measured against their own noise."""
     info = blend.info()
     scale = {}
     for comp in info["components"]:
         for bd in comp["boundary_data"]:
             key = (bd["side"], bd["datum"])
             scale[key] = max(scale.get(key, 0.0), bd["scale"])
+    for (side, datum), s in list(scale.items()):
+        if datum not in ("S", "S_u"):
+            scale[(side, datum)] = max(s, scale.get((side, "S_u"), 0.0))
     worst = 0.0
     for comp in info["components"]:
         for bd in comp["boundary_data"]:
