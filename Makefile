@@ -2,6 +2,7 @@
 #   make demo   install Debian packages, build, blend the thesis' two cylinders, G2-fillet a
 #               shaft on a plate with the FreeCAD workbench's code (out/demo.step)
 #   make results regenerate docs/RESULTS.md (papers' solvers vs the closed form) with bench/compare
+#   make figures regenerate docs/images/papers/ (the papers' figures, docs/FIGURES.md) with tools/plot_papers.py
 #   make test   install Debian packages, build, run every test, then again under
 #               AddressSanitizer + UndefinedBehaviorSanitizer, a subset under Valgrind,
 #               the bounded fuzz runs, then the benchmarks
@@ -16,7 +17,7 @@ VG_BUILD ?= build-vg
 FUZZ_SECONDS ?= 60
 JOBS ?= 2
 
-.PHONY: all deps build demo test test-asan bench results clean
+.PHONY: all deps build demo test test-asan bench results figures clean
 
 all: build
 
@@ -65,6 +66,9 @@ bench: build
 
 results: build
 	$(BUILD)/bench/compare --markdown docs/RESULTS.md
+
+figures: build
+	/usr/bin/python3 tools/plot_papers.py --build $(BUILD) -o docs/images/papers
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) $(VG_BUILD) out
