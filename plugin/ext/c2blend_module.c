@@ -465,6 +465,14 @@ static PyObject *blend_make(PyTypeObject *tp, const char *text, Py_ssize_t len, 
     c2b_blend *blend = NULL;
     c2b_status s = path ? c2b_spec_load(path, &spec, &err)
                         : c2b_spec_parse(text, (size_t)len, &spec, &err);
+    /* A Blend is the exact closed form: it fits, checks and moves in time. The papers'
+     * approximate solvers (docs/APPROX.md) are for comparison, through the CLI. */
+    if (!s && c2b_spec_solver_settings(spec).kind != C2B_SOLVER_EXACT)
+        s = c2b_error_set(&err, C2B_ERR_SPEC,
+                          "solver: the approximate solvers (thesis-approx, pseudo-navier) are not "
+                          "available in the Python module, which fits and checks exact blends; "
+                          "remove \"solver\" for the closed form, or evaluate them with the CLI: "
+                          "c2blend eval SPEC");
     if (!s) {
         c2b_problem pb = *c2b_spec_problem(spec);
         if (has_time)
@@ -1335,8 +1343,10 @@ PyDoc_STRVAR(Blend_doc,
 "\n"
 "spec is a dict (serialised with json.dumps(spec, allow_nan=True)) or JSON text as str\n"
 "or bytes, in the format of README.md \"Spec format\". The blend is built at `time`, or\n"
-"at the spec's \"time\". Errors: SpecError naming the field, NumericalError for a\n"
-"resonant mode. A Blend may be shared between threads: its methods are serialised.");
+"at the spec's \"time\". It is the exact closed form: a spec with an approximate\n"
+"\"solver\" (docs/APPROX.md) raises SpecError; the CLI's `c2blend eval` evaluates those.\n"
+"Errors: SpecError naming the field, NumericalError for a resonant mode. A Blend may be\n"
+"shared between threads: its methods are serialised.");
 
 static PyType_Slot Blend_slots[] = {
     {Py_tp_doc, (void *)Blend_doc},

@@ -289,6 +289,10 @@ def test_kernel_errors():
         blend("thesis_eq130_131").eval_grid(np.zeros(10000), np.zeros(10000))
     assert e.value.status == c2blend.ERR_LIMIT and "limit" in str(e.value)
     assert issubclass(c2blend.SpecError, c2blend.Error) and issubclass(c2blend.Error, Exception)
+    # an approximate "solver" is refused by name, never silently solved in closed form
+    for name in ("thesis_eq127_129_approx", "seed001_eq17_navier"):
+        with pytest.raises(c2blend.SpecError, match=r"^solver: the approximate solvers"):
+            blend(name)
 
 
 def test_argument_errors():
