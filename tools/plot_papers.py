@@ -86,7 +86,7 @@ class Kernel:
 
     def cli_grid(self, spec, nu, nv):
         """`c2blend eval` on the grid u_i = i/(nu-1), v_j over v_range (both ends): (nu, nv, 3).
-        Used for the approximate solvers, which the Python module does not select."""
+        Used for the approximate solvers, which the Python module refuses."""
         out = self.run(["eval", "-", "--u", str(nu), "--v", str(nv)], spec)
         a = np.loadtxt(io.StringIO(out), delimiter=",", skiprows=1, ndmin=2)
         return a[:, 2:5].reshape(nu, nv, 3)
