@@ -59,6 +59,7 @@ struct c2b_spec {
     char name[128];
     c2b_spec_solver solver;           /* "solver", "M", "N", "collocation", "approach" */
     c2b_expr *curve[6][C2B_NCOMP];    /* "curves": c1, c4, controls[0..3] */
+    double *curve_samples[6];         /* the same curves given as samples (owned) */
     c2b_odesurf *odesurf;             /* owns the data contexts of a "curves" spec */
 };
 
@@ -131,6 +132,8 @@ void c2b_spec_destroy(c2b_spec *s)
     for (int k = 0; k < 6; k++)
         for (int c = 0; c < C2B_NCOMP; c++)
             c2b_expr_destroy(s->curve[k][c]);
+    for (int k = 0; k < 6; k++)
+        free(s->curve_samples[k]);
     c2b_odesurf_destroy(s->odesurf);
     free(s);
 }
@@ -482,6 +485,42 @@ static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error
     return C2B_OK;
 }
 
+/* {"samples": [[x, y, z], ...]} (the object j, at field `where`): uniform over v_range,
+ * the end point not repeated on periodic ranges. *out gets n rows of 3 finite numbers,
+ * malloc'd (the caller owns it). `what` names the sampled thing in the count message. */
+static c2b_status parse_samples(const c2b_spec *s, const cJSON *j, const char *where, const char *what,
+                                double **out, int *n, c2b_error *err)
+{
+    static const char *const keys[] = {"samples", NULL};
+    c2b_status st = check_keys(j, where, keys, err);
+    if (st)
+        return st;
+    const cJSON *sm = cJSON_GetObjectItemCaseSensitive(j, "samples");
+    if (!cJSON_IsArray(sm))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s.samples: expected an array of [x, y, z]", where);
+    int ns = cJSON_GetArraySize(sm);
+    int nmin = s->pb.dom.periodic ? 4 : 7;
+    if (ns < nmin)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s.samples: %d samples given, at least %d are needed (%s %s)",
+                             where, ns, nmin, s->pb.dom.periodic ? "periodic" : "open", what);
+    double *buf = malloc((size_t)ns * 3 * sizeof *buf);
+    if (!buf)
+        return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+    int i = 0;
+    for (const cJSON *x = sm->child; x; x = x->next, i++) {
+        char f[LABEL_LEN + 16];
+        snprintf(f, sizeof f, "%s.samples[%d]", where, i);
+        st = want_numbers(x, f, 3, buf + 3 * i, err);
+        if (st) {
+            free(buf);
+            return st;
+        }
+    }
+    *out = buf;
+    *n = ns;
+    return C2B_OK;
+}
+
 static c2b_status parse_boundary_row(c2b_spec *s, const cJSON *row, int side, int p,
                                      const char *where, c2b_error *err)
 {
@@ -504,32 +543,11 @@ static c2b_status parse_boundary_row(c2b_spec *s, const cJSON *row, int side, in
         return C2B_OK;
     }
     if (cJSON_IsObject(row)) {
-        static const char *const keys[] = {"samples", NULL};
-        c2b_status st = check_keys(row, where, keys, err);
+        double *buf = NULL;
+        int ns = 0;
+        c2b_status st = parse_samples(s, row, where, "trimline", &buf, &ns, err);
         if (st)
             return st;
-        const cJSON *sm = cJSON_GetObjectItemCaseSensitive(row, "samples");
-        if (!cJSON_IsArray(sm))
-            return c2b_error_set(err, C2B_ERR_SPEC, "%s.samples: expected an array of [x, y, z]", where);
-        int ns = cJSON_GetArraySize(sm);
-        int nmin = s->pb.dom.periodic ? 4 : 7;
-        if (ns < nmin)
-            return c2b_error_set(err, C2B_ERR_SPEC,
-                                 "%s.samples: %d samples given, at least %d are needed (%s trimline)",
-                                 where, ns, nmin, s->pb.dom.periodic ? "periodic" : "open");
-        double *buf = malloc((size_t)ns * 3 * sizeof *buf);
-        if (!buf)
-            return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-        int i = 0;
-        for (const cJSON *x = sm->child; x; x = x->next, i++) {
-            char f[LABEL_LEN + 16];
-            snprintf(f, sizeof f, "%s.samples[%d]", where, i);
-            st = want_numbers(x, f, 3, buf + 3 * i, err);
-            if (st) {
-                free(buf);
-                return st;
-            }
-        }
         for (int c = 0; c < C2B_NCOMP; c++) {
             datum *d = &s->data[c][side][p];
             snprintf(d->label, LABEL_LEN, "%s.samples (component %c)", where, "xyz"[c]);
@@ -662,13 +680,22 @@ static c2b_status parse_solver(c2b_spec *s, const cJSON *root, c2b_error *err)
 
 static double curve_fn(void *ctx, double v, double t) { return c2b_expr_eval(ctx, 0.0, v, t); }
 
-/* Three expressions in v, t into s->curve[k]; *out gets the curve. */
+/* A curve into slot k: three expressions in v, t (into s->curve[k]) or
+ * {"samples": [[x, y, z], ...]}, uniform over v_range like sampled boundary rows (into
+ * s->curve_samples[k]; c2b_odesurf expands them). *out gets the curve. */
 static c2b_status parse_curve(c2b_spec *s, const cJSON *j, const char *where, int k, c2b_curve *out,
                               c2b_error *err)
 {
-    if (!cJSON_IsArray(j) || cJSON_GetArraySize(j) != 3)
-        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected 3 expressions [x, y, z] in v and t", where);
     memset(out, 0, sizeof *out);
+    if (cJSON_IsObject(j)) {
+        c2b_status st = parse_samples(s, j, where, "curve", &s->curve_samples[k], &out->n_samples, err);
+        out->samples = s->curve_samples[k];
+        return st;
+    }
+    if (!cJSON_IsArray(j) || cJSON_GetArraySize(j) != 3)
+        return c2b_error_set(err, C2B_ERR_SPEC,
+                             "%s: expected 3 expressions [x, y, z] in v and t, or {\"samples\": [[x, y, z], ...]}",
+                             where);
     int c = 0;
     for (const cJSON *x = j->child; x; x = x->next, c++) {
         char f[LABEL_LEN];
@@ -684,7 +711,8 @@ static c2b_status parse_curve(c2b_spec *s, const cJSON *j, const char *where, in
 }
 
 /* Seed 000 surfaces: "curves": {"c1": [...], "c4": [...], "w": [w1..w4]} or
- * {"c1", "c4", "controls": [{"u": u2, "curve": [...]}, x 4]} (c2b_odesurf.h). */
+ * {"c1", "c4", "controls": [{"u": u2, "curve": [...]}, x 4]} (c2b_odesurf.h); every
+ * curve is [x, y, z] expressions or {"samples": [[x, y, z], ...]}. */
 static c2b_status parse_curves(c2b_spec *s, const cJSON *j, c2b_error *err)
 {
     if (!cJSON_IsObject(j))
@@ -740,6 +768,7 @@ static c2b_status parse_curves(c2b_spec *s, const cJSON *j, c2b_error *err)
         in.shape[k] = s->pb.shape[0][k];
     in.dom = s->pb.dom;
     in.time = s->pb.time;
+    in.tol = &s->pb.tol;
     if ((st = c2b_odesurf_create(&in, &s->odesurf, err)))
         return st;
     const c2b_problem *op = c2b_odesurf_problem(s->odesurf);

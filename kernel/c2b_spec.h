@@ -29,8 +29,10 @@ typedef struct c2b_spec c2b_spec;
  * Parse a spec from `len` bytes of JSON text (need not be NUL-terminated).
  * @return C2B_OK; C2B_ERR_SPEC naming the field for malformed JSON (with the line),
  *         unknown or missing keys, wrong types, wrong row counts, unknown identifiers,
- *         non-finite numbers and zero-length ranges; C2B_ERR_LIMIT for oversized
- *         input; C2B_ERR_NOMEM.
+ *         non-finite numbers, too few samples (boundary rows and "curves", e.g.
+ *         `curves.controls[2].curve.samples: 3 samples given, at least 7 are needed`)
+ *         and zero-length ranges; C2B_ERR_LIMIT for oversized input or too many
+ *         samples in a curve; C2B_ERR_NOMEM.
  */
 c2b_status c2b_spec_parse(const char *json, size_t len, c2b_spec **out, c2b_error *err);
 
