@@ -1,12 +1,13 @@
 /* Thesis approximate analytic solutions (sections 3.3 and 3.4.1); see c2b_approx.h. */
 #include "c2b_approx.h"
 
-#include <lapacke.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "c2b_constants.h"
+#include "c2b_lsq.h"
 #include "c2b_poly.h"
 
 #define NDATA 3 /* constraints per trimline for C2 */
@@ -36,8 +37,7 @@ struct c2b_approx {
     double *phi;   /* [(NI+1)][4][M]: phi_m^{(0,2,4,6)}(u_i) */
     double *gk;    /* [(NI+1)][4][6]: g_l^{(0,2,4,6)}(u_i) */
     double *fv;    /* [(NJ+1)][4]: C^{(0,2,4,6)}(v_j) */
-    double *A, *b, *cn;
-    int *jpvt;
+    double *A, *b;
 };
 
 c2b_approx_options c2b_approx_options_default(void)
@@ -78,10 +78,7 @@ static void free_work(c2b_approx *a)
     free(a->fv);
     free(a->A);
     free(a->b);
-    free(a->cn);
-    free(a->jpvt);
-    a->phi = a->gk = a->fv = a->A = a->b = a->cn = NULL;
-    a->jpvt = NULL;
+    a->phi = a->gk = a->fv = a->A = a->b = NULL;
 }
 
 void c2b_approx_destroy(c2b_approx *a)
@@ -197,42 +194,19 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, int part, d
                       sh[2] * gl[1 * 6 + l] * fj[2] + sh[3] * gl[l] * fj[3];
         }
     }
-    double bnorm = 0;
-    for (long r = 0; r < rows; r++)
-        bnorm += a->b[r] * a->b[r];
-    for (int m = 0; m < M; m++) {
-        double nrm = 0;
-        for (long r = 0; r < rows; r++)
-            nrm += a->A[r + rows * m] * a->A[r + rows * m];
-        nrm = sqrt(nrm);
-        a->cn[m] = nrm > 0 ? nrm : 1.0;
-        for (long r = 0; r < rows; r++)
-            a->A[r + rows * m] /= a->cn[m];
-        a->jpvt[m] = 0;
-    }
-    lapack_int rank = 0;
-    lapack_int info = LAPACKE_dgelsy(LAPACK_COL_MAJOR, (lapack_int)rows, M, 1, a->A,
-                                     (lapack_int)rows, a->b, (lapack_int)rows, a->jpvt,
-                                     a->opt.rcond, &rank);
-    if (info != 0)
-        return c2b_error_set(err, C2B_ERR_NUMERIC,
-                             "thesis-approx: datum %c, side %d, order %d%s%s: dgelsy failed (info %d)",
-                             "xyz"[c], side, p, a->nparts > 1 ? ", " : "",
-                             a->nparts > 1 ? PART_NAME[part] : "", (int)info);
+    char what[96];
+    snprintf(what, sizeof what, "thesis-approx: datum %c, side %d, order %d%s%s", "xyz"[c], side, p,
+             a->nparts > 1 ? ", " : "", a->nparts > 1 ? PART_NAME[part] : "");
+    int rank = 0;
+    double rs = 0;
+    c2b_status st = c2b_lsq_solve(rows, M, a->A, a->b, a->opt.rcond, s->c, &rank, &rs, what, err);
+    if (st)
+        return st;
     if (rank < M)
         return c2b_error_set(err, C2B_ERR_NUMERIC,
-                             "thesis-approx: datum %c, side %d, order %d%s%s: least squares rank %d < M = %d "
-                             "(reduce M or refine the collocation grid)",
-                             "xyz"[c], side, p, a->nparts > 1 ? ", " : "",
-                             a->nparts > 1 ? PART_NAME[part] : "", (int)rank, M);
-    s->rank = (int)rank;
-    for (int m = 0; m < M; m++)
-        s->c[m] = a->b[m] / a->cn[m];
-    /* residual: b - A c; dgelsy leaves rows M.. of b as the orthogonal complement part */
-    double rs = 0;
-    for (long r = M; r < rows; r++)
-        rs += a->b[r] * a->b[r];
-    (void)bnorm;
+                             "%s: least squares rank %d < M = %d (reduce M or refine the collocation grid)",
+                             what, rank, M);
+    s->rank = rank;
     s->resid_ss = rs;
     s->resid_n = rows;
     return C2B_OK;
@@ -315,9 +289,7 @@ c2b_status c2b_approx_create(const double shape[C2B_NCOMP][5], const c2b_vdomain
     a->fv = malloc(sizeof(double) * (size_t)(NJ + 1) * 4);
     a->A = malloc(sizeof(double) * rows * M);
     a->b = malloc(sizeof(double) * rows);
-    a->cn = malloc(sizeof(double) * M);
-    a->jpvt = malloc(sizeof(int) * M);
-    if (!a->phi || !a->gk || !a->fv || !a->A || !a->b || !a->cn || !a->jpvt) {
+    if (!a->phi || !a->gk || !a->fv || !a->A || !a->b) {
         c2b_approx_destroy(a);
         return c2b_error_set(err, C2B_ERR_NOMEM, "thesis-approx: out of memory for a %zu x %d system",
                              rows, M);

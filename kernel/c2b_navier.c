@@ -1,12 +1,13 @@
 /* Seed 001 pseudo-Navier solution (eqs. 9-15); see c2b_navier.h. */
 #include "c2b_navier.h"
 
-#include <lapacke.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "c2b_constants.h"
+#include "c2b_lsq.h"
 #include "c2b_poly.h"
 
 struct c2b_navier {
@@ -66,12 +67,10 @@ static c2b_status solve_component(c2b_navier *nv, int c, c2b_error *err)
     const int rows = (o->ci + 1) * (o->cj + 1);
     const double b = nv->shape[c][0], cc = nv->shape[c][1], d = nv->shape[c][2];
     double *A = malloc(sizeof(double) * (size_t)rows * nt);
-    double *rhs = malloc(sizeof(double) * (size_t)(rows > nt ? rows : nt));
-    double *cn = malloc(sizeof(double) * nt);
-    int *jpvt = calloc((size_t)nt, sizeof(int));
+    double *rhs = malloc(sizeof(double) * (size_t)rows);
     nv->A[c] = calloc((size_t)nt, sizeof(double));
     c2b_status st = C2B_OK;
-    if (!A || !rhs || !cn || !jpvt || !nv->A[c]) {
+    if (!A || !rhs || !nv->A[c]) {
         st = c2b_error_set(err, C2B_ERR_NOMEM, "pseudo-navier: out of memory");
         goto done;
     }
@@ -131,36 +130,18 @@ static c2b_status solve_component(c2b_navier *nv, int c, c2b_error *err)
             goto done;
         }
     }
-    for (int k = 0; k < nt; k++) {
-        double s = 0;
-        for (int r = 0; r < rows; r++)
-            s += A[r + (size_t)rows * k] * A[r + (size_t)rows * k];
-        cn[k] = s > 0 ? sqrt(s) : 1.0;
-        for (int r = 0; r < rows; r++)
-            A[r + (size_t)rows * k] /= cn[k];
-    }
-    lapack_int rank = 0;
-    lapack_int info = LAPACKE_dgelsy(LAPACK_COL_MAJOR, rows, nt, 1, A, rows, rhs,
-                                     rows > nt ? rows : nt, jpvt, o->rcond, &rank);
-    if (info != 0) {
-        st = c2b_error_set(err, C2B_ERR_NUMERIC, "pseudo-navier: component %c: dgelsy failed (info %d)",
-                           "xyz"[c], (int)info);
-        goto done;
-    }
-    if (rank < nt) {
+    char what[48];
+    snprintf(what, sizeof what, "pseudo-navier: component %c", "xyz"[c]);
+    int rank = 0;
+    st = c2b_lsq_solve(rows, nt, A, rhs, o->rcond, nv->A[c], &rank, NULL, what, err);
+    if (!st && rank < nt)
         st = c2b_error_set(err, C2B_ERR_NUMERIC,
-                           "pseudo-navier: component %c: rank %d < M*N = %d at %d collocation points "
+                           "%s: rank %d < M*N = %d at %d collocation points "
                            "(the sin(n w) columns vanish at v = v0 and v1)",
-                           "xyz"[c], (int)rank, nt, rows);
-        goto done;
-    }
-    for (int k = 0; k < nt; k++)
-        nv->A[c][k] = rhs[k] / cn[k];
+                           what, rank, nt, rows);
 done:
     free(A);
     free(rhs);
-    free(cn);
-    free(jpvt);
     return st;
 }
 
