@@ -65,20 +65,20 @@ class RollingBallFace:
     """One rolling-ball face and its surroundings.
 
     Attributes: face; contacts: [(edge, neighbour face), (edge, neighbour face)];
-    ends: [(edge, neighbour face)] (empty for a closed fillet); seams: [edge];
+    ends: [(edge, neighbour face)] (empty for a closed fillet);
     links: [(edge, fillet face)], tangent joins to other rolling-ball faces of a chain;
     corner: None, or a string saying why the face cannot be replaced (corner patch).
-    along: 0 or 1, the surface parameter along the fillet; across: (c1, c2).
+    along: 0 or 1, the surface parameter along the fillet; range: its range on the face;
+    across: (c1, c2), the across-parameters of the two contacts.
     """
 
     def __init__(self, result, face, fillet_faces):
         self.face = face
-        self.contacts, self.ends, self.seams, self.links = [], [], [], []
+        self.contacts, self.ends, self.links = [], [], []
         self.corner = None
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
-            if not nbrs:
-                self.seams.append(e)
+            if not nbrs:  # a seam
                 continue
             nb = nbrs[0]
             p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
@@ -121,7 +121,6 @@ class RollingBallFace:
         lo, hi = (r[2], r[3]) if across == 1 else (r[0], r[1])
         self.across = tuple(_snap(c, lo, hi) for c in cs)
         self.range = (r[0], r[1]) if self.along == 0 else (r[2], r[3])
-        self.closed = not self.ends
 
     def point(self, a, c):
         """Surface point at along-parameter a and across-parameter c."""
@@ -136,10 +135,8 @@ class RollingBallFace:
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
         lies, or None when it lies inside the range."""
         p = edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
-        a = self.face.Surface.parameter(p)[self.along]
-        a0, a1 = self.range
-        end = min((a0, a1), key=lambda x: abs(x - a))
-        return end if abs(end - a) < 1e-6 * (1 + abs(a1 - a0)) else None
+        a = _snap(self.face.Surface.parameter(p)[self.along], *self.range)
+        return a if a in self.range else None
 
 
 # 5-point Gauss-Legendre nodes and weights on [0, 1]
