@@ -1,0 +1,124 @@
+#!/usr/bin/python3
+"""C2 Fillet on a handful of typical parts: what each gives (G2 blend, or OCCT's faces
+kept and why), whether the solid is valid, and the time. With --validation it also times
+OCCT's validity checks on the filleted shaft-on-plate solid.
+
+usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py [--validation]
+"""
+import argparse
+import os
+import statistics
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.append("/usr/lib/freecad-python3/lib")
+sys.path.insert(0, os.environ.get("C2B_MODULE_DIR", os.path.join(HERE, "..", "build", "plugin", "ext")))
+sys.path.insert(0, os.path.join(HERE, "..", "plugin", "C2Blend"))
+sys.path.insert(0, os.path.join(HERE, "..", "tests", "freecad"))
+os.environ.setdefault("HOME", tempfile.mkdtemp())
+
+import FreeCAD  # noqa: E402
+import Part  # noqa: E402
+
+import C2Blend  # noqa: E402
+import shapes  # noqa: E402
+
+V = FreeCAD.Vector
+
+
+def curve_is(e, kind):
+    try:
+        return isinstance(e.Curve, kind)
+    except Exception:  # curves FreeCAD cannot wrap
+        return False
+
+
+def names(s, pred):
+    return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e)]
+
+
+def parts():
+    """(name, solid, edge names, radius) of each part."""
+    out = []
+    b = Part.makeBox(10, 10, 10)
+    out.append(("box, 4 top edges", b, names(b, lambda e: abs(e.BoundBox.ZMin - 10) < 1e-9
+                                          and abs(e.BoundBox.ZMax - 10) < 1e-9), 2.0))
+    c = Part.makeCylinder(5, 10)
+    out.append(("cylinder top circle", c, names(c, lambda e: curve_is(e, Part.Circle)
+                                                 and abs(e.BoundBox.ZMin - 10) < 1e-9), 1.0))
+    p = Part.makeBox(40, 40, 5, V(-20, -20, 0)).cut(Part.makeCylinder(5, 5))
+    out.append(("hole edge in a plate", p, names(p, lambda e: curve_is(e, Part.Circle)
+                                                 and abs(e.BoundBox.ZMin - 5) < 1e-9), 1.0))
+    k = Part.makeCone(6, 3, 8).fuse(Part.makeBox(30, 30, 3, V(-15, -15, -3))).removeSplitter()
+    out.append(("cone on a plate", k, names(k, lambda e: curve_is(e, Part.Circle)
+                                            and abs(e.BoundBox.ZMin) < 1e-9
+                                            and e.BoundBox.XMax < 7), 1.5))
+    s, n = shapes.split_shaft_on_plate()
+    out.append(("shaft of two half cylinders", s, n, 2.0))
+    t, n = shapes.pipe_tee()
+    out.append(("pipe tee", t, n, 1.0))
+    sp = Part.makeSphere(6).cut(Part.makeBox(20, 20, 20, V(-10, -10, 2)))
+    out.append(("sphere cap", sp, names(sp, lambda e: not e.Degenerated
+                                        and len(sp.ancestorsOfType(e, Part.Face)) == 2
+                                        and abs(e.BoundBox.ZMin - 2) < 1e-9), 1.0))
+    sl = Part.makeBox(20, 10, 5).fuse(Part.makeCylinder(5, 5, V(20, 5, 0))).removeSplitter()
+    out.append(("slot-like plate, long top edge", sl,
+                names(sl, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 5) < 1e-9
+                      and abs(e.BoundBox.YMax) < 1e-9), 1.0))
+    return out
+
+
+def survey():
+    print("| part | edges | R | verdict | valid | blends | kept | ms | kept because |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for name, shape, edges, r in parts():
+        t0 = time.perf_counter()
+        try:
+            solid, rep = C2Blend.fillet_report(shape, edges, r)
+        except C2Blend.Error as ex:
+            print("| %s | %d | %g | error | | | | | %s |" % (name, len(edges), r, ex))
+            continue
+        ms = 1e3 * (time.perf_counter() - t0)
+        why = sorted({k["reason"] for k in rep["kept_occt_faces"]})
+        print("| %s | %d | %g | %s | %s | %d | %d | %.0f | %s |"
+              % (name, len(edges), r, rep["verdict"], solid.isValid(), len(rep["blends"]),
+                 len(rep["kept_occt_faces"]), ms, "; ".join(why)))
+
+
+def median_ms(f, n=5):
+    ts = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        f()
+        ts.append(time.perf_counter() - t0)
+    return 1e3 * statistics.median(ts)
+
+
+def validation():
+    s, edge = shapes.shaft_on_plate()
+    solid, _ = C2Blend.fillet_report(s, [edge], 2.0)
+    blend = next(f for f in solid.Faces if isinstance(f.Surface, Part.BSplineSurface))
+    nbrs = [f for f in solid.Faces if not f.isSame(blend)
+            and any(e.isSame(x) for e in f.Edges for x in blend.Edges)]
+    local = Part.Compound([blend] + nbrs)
+    print("validity checks on the filleted shaft on plate (median of 5, ms):")
+    print("  isValid()                       %8.2f" % median_ms(solid.isValid))
+    print("  check(False)  (BRepCheck)       %8.2f" % median_ms(lambda: solid.check(False)))
+    print("  check(True)   (+ BOP analysis)  %8.2f" % median_ms(lambda: solid.check(True)))
+    print("  check(True) on the blend and its %d neighbours only %8.2f"
+          % (len(nbrs), median_ms(lambda: local.check(True))))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--validation", action="store_true", help="also time OCCT's validity checks")
+    a = ap.parse_args()
+    survey()
+    if a.validation:
+        validation()
+
+
+if __name__ == "__main__":
+    main()
