@@ -127,18 +127,68 @@ def test_closed_chain_of_two_edges():
         assert abs(r["g2"] - 0.5) < 1e-9  # torus meridian 1/R against plane / cylinder
 
 
-def test_chain_on_approximate_rolling_ball_is_kept():
-    """A pipe tee: OCCT's rolling-ball surface is a B-spline approximation (tolerance
-    ~5e-5), too rough for exact G2 data; its faces are kept, said so, and the verdict
-    is G1, never G2. The solid is still valid."""
+def trimline_samples(solid, rep, n=41):
+    """Points (S(0, v), S(1, v)) of each blend face of a fillet at n values of v."""
+    out = []
+    for face in solid.Faces:
+        if face.Surface.__class__.__name__ != "BSplineSurface":
+            continue
+        u0, u1, v0, v1 = face.Surface.bounds()
+        for k in range(n):
+            v = v0 + (v1 - v0) * k / (n - 1)
+            out.append((face.Surface.value(u0, v), face.Surface.value(u1, v)))
+    assert len(out) == n * len(rep["blends"])
+    return out
+
+
+def test_pipe_tee_exact_contact():
+    """A pipe tee (r = 5 along z, r = 3 along x, R = 1): OCCT's rolling-ball face is a
+    B-spline approximation whose contact edges lie up to 2e-3 off the true contact. The
+    blend's trimlines are the ball's true contact: a ball of radius 1 in the concave
+    junction has its centre 6 from the z axis and 4 from the x axis, and touches the
+    cylinders on the radii through its centre (closed form, checked at every v)."""
     s, names = shapes.pipe_tee()
     solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Tee")
     assert_valid(solid)
-    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
-    assert "approximation" in rep["kept_occt_faces"][0]["reason"]
-    assert rep["verdict"] == "G1"
-    assert any("kept OCCT's rolling-ball face" in ln
-               for ln in C2Blend.format_report(rep).splitlines())
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 1
+    assert rep["blends"][0]["closed"]
+    for p, q in trimline_samples(solid, rep):
+        big, small = (p, q) if abs(math.hypot(p.x, p.y) - 5) < abs(math.hypot(q.x, q.y) - 5) \
+            else (q, p)
+        assert math.hypot(big.x, big.y) == pytest.approx(5, abs=1e-6)
+        assert math.hypot(small.y, small.z) == pytest.approx(3, abs=1e-6)
+        centre = big + V(big.x, big.y, 0) * (1 / 5)  # 1 out along the big cylinder's radius
+        assert math.hypot(centre.y, centre.z) == pytest.approx(4, abs=1e-6)
+        foot = centre - V(0, centre.y, centre.z) * (1 / 4)
+        assert (foot - small).Length < 1e-6
+    # OCCT's approximate fillet: the check rightly finds no G2 there
+    occt, _ = occt_jump(s, names, 1.0, ("G0", "G1"))
+    assert all(r["g2_rel"] > 0.1 for r in occt["edges"])
+
+
+def test_sphere_cap_exact_contact():
+    """A sphere r = 6 cut at z = 2, top edge filleted at R = 1: the ball's centre is 5
+    from the origin at z = 1, so it touches the plane on the circle of radius sqrt(24)
+    at z = 2 and the sphere on the circle of radius 1.2 sqrt(24) at z = 1.2. OCCT's
+    rolling-ball face approximates this torus (tolerance ~3e-6) and its fillet was once
+    kept as too rough; the blend's trimlines are on the exact circles."""
+    s = Part.makeSphere(6).cut(Part.makeBox(20, 20, 20, V(-10, -10, 2)))
+    edge = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                if not e.Degenerated and len(s.ancestorsOfType(e, Part.Face)) == 2
+                and abs(e.BoundBox.ZMin - 2) < 1e-9)
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Cap")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    for p, q in trimline_samples(solid, rep):
+        top, side = (p, q) if abs(p.z - 2) < abs(q.z - 2) else (q, p)
+        assert top.z == pytest.approx(2, abs=1e-7)
+        assert math.hypot(top.x, top.y) == pytest.approx(math.sqrt(24), abs=1e-6)
+        assert side.z == pytest.approx(1.2, abs=1e-6)
+        assert math.hypot(side.x, side.y) == pytest.approx(1.2 * math.sqrt(24), abs=1e-6)
+    occt, _ = occt_jump(s, [edge], 1.0, ("G0", "G1"))
+    assert any(abs(r["g2"] - 1.0) < 1e-2 for r in occt["edges"])  # 1/R at the plane
 
 
 # 4. blend faces between coaxial cylinders -----------------------------------------------
@@ -278,9 +328,10 @@ def resonant_rho(shape, edge):
     6 x 6 boundary matrix), and the mode cos(2 pi v / L) then needs rho = -L^6."""
     res = shape.makeFillet(2.0, [shape.getElement(edge)])
     from c2bwb.geometry.rollingball import RollingBallFace, chains, new_faces
+    from c2bwb.geometry.contact import Contact
     ff = new_faces(shape, res)
     chain, = chains([RollingBallFace(res, f, ff) for f in ff])
-    rows0, rows1 = fl.sample_rows(chain, 32, 3, 1.0, "test")
+    rows0, rows1 = fl.sample_rows(chain, Contact(chain, 2.0), 32, 3, 1.0, "test")
     return -trimlines.v_length(rows0, rows1, True) ** 6
 
 
@@ -308,9 +359,9 @@ def test_resonant_shape_parameters(boxdoc):
 
 def test_failed_sewing_is_reported(monkeypatch):
     box = shapes.box()
-    # fault injection: the end faces keep OCCT's circular arc, which the PDE blend's end
-    # curve does not follow, so the faces cannot be sewn into a closed shell
-    monkeypatch.setattr(fl, "_replace_edges", lambda face, swaps: face)
+    # fault injection: the faces the blend touches are lost when they are cut along its
+    # boundary, so the faces cannot be sewn into a closed shell
+    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, tol: [])
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: sewing the blend faces .* failed"):
         C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
 

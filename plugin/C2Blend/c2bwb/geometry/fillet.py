@@ -1,17 +1,19 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """G2 fillets on solids (issue 5, MATH.md section 7).
 
-Route: OCCT's rolling-ball fillet of the same radius gives trimlines (its contact edges)
-and corresponding points (its cross-sections). Rolling-ball faces that join each other
+Route: OCCT's rolling-ball fillet of the same radius gives the topology (which faces a
+fillet touches, rollingball.py) and a guide. Rolling-ball faces that join each other
 tangentially end to end (a tangent chain of edges, or an edge OCCT split at a seam) form
-one chain. Each chain whose two sides border one unfilleted face each is replaced by
-one PDE blend with G2 cross-boundary data from those faces, sampled uniformly in arc
-length and fitted as a B-spline face; planar faces at the fillet's ends get the blend's
-end curve as their new boundary; everything is sewn into a solid and checked
-(BRepCheck, and continuity along every trimline). Kept as OCCT made them, and reported
-as such with the reason (no G2 claim is made there): corner patches where fillets meet
-at a vertex, chains whose side changes face, ends on non-planar faces, and rolling-ball
-surfaces that OCCT only approximates too roughly for exact G2 data (RoughTrimlines).
+one chain. For each chain whose two sides are one face each, the exact contact of the
+ball on those faces is traced (contact.py), sampled uniformly in the arc length of the
+ball's centre curve, and turned into G2 cross-boundary data; the PDE blend of those
+data is fitted as a B-spline face. The faces of the original solid that the blend
+touches (its two sides, and the planar faces at its ends) are cut anew along the
+blend's boundary curves, and everything is sewn into a solid and checked (BRepCheck,
+and continuity along every trimline). Kept as OCCT made them, and reported as such with
+the reason (no G2 claim is made there): corner patches where fillets meet at a vertex,
+chains whose side changes face, ends on non-planar faces, and chains whose exact
+contact or blend cannot be built (NotReplaced).
 """
 import math
 import time
@@ -21,15 +23,17 @@ import Part
 from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
-from .rollingball import RollingBallFace, chains, new_faces
+from .contact import Contact, ContactError
+from .rollingball import RollingBallFace, chains, interior_points, new_faces
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
-DATA_KEEP = 1e-6  # above this, the trimlines are too rough for a G2 blend: keep OCCT's face
+DATA_KEEP = 1e-6  # above this, the boundary data are too rough for a G2 blend: keep OCCT's face
+ON_FACE = 10.0  # an end curve lies on its end face within this many fit tolerances
 
 
-class RoughTrimlines(Exception):
-    """The rolling-ball trimlines are not smooth enough for an exact G2 blend."""
+class NotReplaced(Exception):
+    """This chain cannot be replaced by a G2 blend; the message says why."""
 
 
 def resolve_edges(shape, edges, label):
@@ -85,10 +89,9 @@ def check_params(radius, continuity, shape_params, tension, label):
     return shape
 
 
-def sample_rows(chain, n, nrows, tension, where):
-    """Cross-boundary rows at n corresponding points of a rolling-ball chain."""
-    return pair_rows(chain.sides[0], chain.sides[1], chain.section_pairs(n), nrows, tension,
-                     where)
+def sample_rows(chain, contact, n, nrows, tension, where):
+    """Cross-boundary rows at n corresponding points of the exact contact of a chain."""
+    return pair_rows(chain.sides[0], chain.sides[1], contact.pairs(n), nrows, tension, where)
 
 
 class Blended:
@@ -101,57 +104,124 @@ class Blended:
         self.v_range = surface.bounds()[2:4]
 
 
-def solve_face(chain, where, continuity, shape_params, tension, tol_rel, samples, max_samples):
-    """The PDE blend replacing one rolling-ball chain (see bspline.solve_sampled)."""
+def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
+               max_samples):
+    """The PDE blend replacing one rolling-ball chain (see bspline.solve_sampled), from
+    the exact contact of the ball of `radius`. Raises NotReplaced saying why it cannot."""
     nrows = ROWS[continuity]
-    blend, n, err = solve_sampled(
-        lambda k: sample_rows(chain, k, nrows, tension, where),
-        lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
-                                      "fillet " + where),
-        where, samples, max_samples, DATA_REL)
+    try:
+        contact = Contact(chain, radius)
+        blend, n, err = solve_sampled(
+            lambda k: sample_rows(chain, contact, k, nrows, tension, where),
+            lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
+                                          "fillet " + where),
+            where, samples, max_samples, DATA_REL)
+    except ContactError as ex:
+        raise NotReplaced(str(ex)) from None
     if err > DATA_KEEP:
-        raise RoughTrimlines(
-            "OCCT's rolling-ball surface here is an approximation (face tolerance %.1e); the "
-            "boundary data sampled from it converge only to %.1e (relative) with %d samples, "
-            "too rough for an exact G2 blend" % (max(f.Tolerance for f in chain.faces), err, n))
+        raise NotReplaced("the boundary data sampled along the exact contact converge only "
+                          "to %.1e (relative) with %d samples, too rough for an exact G2 "
+                          "blend" % (err, n))
     surface, fit = fit_surface(blend, tol_rel, where)
-    return Blended(chain, where, surface, fit, n, err)
+    b = Blended(chain, where, surface, fit, n, err)
+    for edge, face, v in _end_curves(b):
+        gap = max(_off_surface(face.Surface, surface.value(u / 8.0, v)) for u in range(9))
+        if gap > ON_FACE * fit["tolerance"]:
+            raise NotReplaced("the blend's end section leaves the end face by %.1e (the end "
+                              "face is not across the fillet)" % gap)
+    return b
 
 
-def _replace_edges(face, swaps):
-    """A planar face like `face` with edges replaced per swaps [(old, new)]."""
-    wires = []
-    for w in face.Wires:
-        es = [next((new for old, new in swaps if old.isSame(e)), e) for e in w.Edges]
-        wires.append(Part.Wire(Part.__sortEdges__(es)))
-    return Part.makeFace(wires, "Part::FaceMakerBullseye")
+def _off_surface(surface, p):
+    """Distance from point p to its projection onto surface."""
+    return (surface.value(*surface.parameter(p)) - p).Length
 
 
-def assemble(result, blended, where):
-    """The solid: result's faces with rolling-ball faces replaced by the blends and the
-    planar end faces re-bounded; sewn, made a solid and checked. Raises C2BlendError."""
-    swaps = {}  # planar end face index -> [(old edge, new edge)]
-    faces_out = []
+def _end_curves(b):
+    """(end edge, end face, v) per end of the blend's chain: v is the end of the blend's
+    v-range nearest to the end edge (none for a closed chain)."""
+    ends = {v: Part.Vertex(b.surface.value(0.5, v)) for v in b.v_range}
+    return [(e, face, min(ends, key=lambda v: e.distToShape(ends[v])[0]))
+            for e, face in b.chain.ends]
+
+
+def _on_face(face, p, tol):
+    """True when point p lies on face (within tol)."""
+    return face.distToShape(Part.Vertex(p))[0] <= tol
+
+
+def _cut_face(face, tools, sharp, tol):
+    """The pieces of an original face, cut along the edges `tools` lying on it, that do
+    not touch any of the `sharp` edges the fillets consumed."""
+    pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
+    return [f for f in pieces if all(f.distToShape(e)[0] > tol for e in sharp)]
+
+
+def _update_tolerances(solid, faces):
+    """Raise the tolerance of each edge of `faces` to 1.5x the largest distance between
+    its 3D curve and its curves on the faces (what the BOP check measures), where the
+    new pcurves made by cutting and sewing are further off than the edge's tolerance."""
+    for f in faces:
+        for e in f.Edges:
+            worst = 0.0
+            for k in range(8):
+                try:
+                    c2, surf, place, a, b = e.curveOnSurface(k)
+                except (TypeError, ValueError, RuntimeError, IndexError):
+                    break
+                for j in range(41):
+                    t = a + (b - a) * j / 40.0
+                    uv = c2.value(t)
+                    q = surf.value(uv.x, uv.y)
+                    worst = max(worst, ((place.multVec(q) if place else q) - e.valueAt(t)).Length)
+            if worst > e.Tolerance:
+                e.fixTolerance(1.5 * worst)
+
+
+def assemble(shape, result, blended, fillet_faces, where):
+    """The solid: the faces of `result` (OCCT's fillet of `shape`) with the replaced
+    rolling-ball faces dropped, the blend faces added, and every face of `shape` that a
+    blend touches (sides and ends) cut anew along the blends' boundary curves; sewn,
+    made a solid and checked. Raises C2BlendError."""
+    diag = shape.BoundBox.DiagonalLength
+    tol = 1e-7 * diag
     drop = [f for b in blended for f in b.chain.faces]
+    kept_fillets = [f for f in fillet_faces if not any(f.isSame(d) for d in drop)]
+    faces_out = [b.face for b in blended]
+    # the original faces the blends touch, with the blend curves lying on each
+    touched = []  # [(original face, [tool edges])]
     for b in blended:
-        v0, v1 = b.v_range
-        ends = {v: b.surface.value(0.5, v) for v in (v0, v1)}
-        for e, plane in b.chain.ends:
-            mid = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
-            v = min(ends, key=lambda x: (ends[x] - mid).Length)
-            new = Part.Edge(b.surface.vIso(v))
-            i = next(k for k, f in enumerate(result.Faces) if f.isSame(plane))
-            swaps.setdefault(i, []).append((e, new))
-        faces_out.append(b.face)
-    for i, f in enumerate(result.Faces):
+        curves = [(b.chain.sides[0], b.surface.uIso(0.0)), (b.chain.sides[1], b.surface.uIso(1.0))]
+        curves += [(face, b.surface.vIso(v)) for _, face, v in _end_curves(b)]
+        for res_face, curve in curves:
+            probe = interior_points(res_face, 3)[0]
+            orig = min(shape.Faces, key=lambda g: g.distToShape(Part.Vertex(probe))[0])
+            entry = next((t for t in touched if t[0].isSame(orig)), None)
+            if entry is None:
+                entry = (orig, [])
+                touched.append(entry)
+            entry[1].append(Part.Edge(curve))
+    boundary = Part.Compound(result.Faces)
+    sharp = [e for e in shape.Edges  # the edges the fillets consumed
+             if boundary.distToShape(Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))))[0] > tol]
+    for orig, tools in touched:
+        # edges of OCCT fillets kept on this face bound it too
+        tools += [e for k in kept_fillets for e in k.Edges
+                  if all(_on_face(orig, e.valueAt(e.FirstParameter + x * (e.LastParameter - e.FirstParameter)), tol)
+                         for x in (0.25, 0.5, 0.75))]
+        try:
+            pieces = _cut_face(orig, tools, sharp, tol)
+        except Exception as ex:
+            raise C2BlendError("cannot cut face %s of the original solid along the blend "
+                               "(%s)" % (ck.element_name(shape, orig, "Face"), ex), where,
+                               "sewing") from None
+        faces_out += pieces
+    for f in result.Faces:
         if any(f.isSame(d) for d in drop):
             continue
-        if i in swaps:
-            try:
-                f = _replace_edges(f, swaps[i])
-            except Exception as ex:
-                raise C2BlendError("cannot rebound the end face Face%d with the blend's end "
-                                   "curve (%s)" % (i + 1, ex), where, "sewing") from None
+        if any(_on_face(orig, p, tol) for orig, _ in touched
+               for p in interior_points(f, 3)[:1]) and not any(f.isSame(k) for k in kept_fillets):
+            continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
     sewn = Part.Compound(faces_out)
     sewn.sewShape()
@@ -166,6 +236,7 @@ def assemble(result, blended, where):
     solid = Part.Solid(shells[0])
     if solid.Volume < 0:
         solid.reverse()
+    _update_tolerances(solid, [_find_face(solid, b.surface) for b in blended])
     try:
         solid.check(True)  # BRepCheck_Analyzer, as isValid(), but says what is wrong
     except Exception as ex:
@@ -254,12 +325,12 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             kept.append({"where": where, "reason": chain.corner})
             continue
         try:
-            blended.append(solve_face(chain, where, continuity, shape_params, tension, tol_rel,
-                                      samples, max_samples))
-        except RoughTrimlines as ex:
+            blended.append(solve_face(chain, radius, where, continuity, shape_params, tension,
+                                      tol_rel, samples, max_samples))
+        except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
     t_solve = time.perf_counter()
-    solid = assemble(result, blended, where_all) if blended else (
+    solid = assemble(shape, result, blended, fillet_faces, where_all) if blended else (
         result.Solids[0] if len(result.Solids) == 1 else result)
     t_assemble = time.perf_counter()
     checks = _trimline_checks(solid, blended)

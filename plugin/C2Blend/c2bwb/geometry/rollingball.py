@@ -1,17 +1,14 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""Trimlines and correspondence from OCCT's rolling-ball fillet.
+"""The topology of OCCT's rolling-ball fillet: which faces a blend replaces.
 
 OCCT's fillet (BRepFilletAPI_MakeFillet, via Shape.makeFillet) gives, for each filleted
-edge, a face whose two contact edges are the trimlines on the adjacent faces and whose
-cross-sections (iso-curves across) join corresponding points. OCCT makes one such face
-per edge of a tangent chain and splits closed edges at seams; faces that join each other
-tangentially across a cross-section form one chain (FilletChain), which becomes one
-blend. This module finds those faces in the result, classifies their edges, orders the
-chains and samples corresponding points uniformly in arc length.
+edge, a face whose two contact edges lie on the adjacent faces and whose cross-sections
+(iso-curves across) join corresponding points. OCCT makes one such face per edge of a
+tangent chain and splits closed edges at seams; faces that join each other tangentially
+across a cross-section form one chain (FilletChain), which becomes one blend. This
+module finds those faces in the result, classifies their edges and orders the chains;
+contact.py traces the exact contact along a chain, with its faces as the guide.
 """
-import bisect
-import math
-
 import Part
 
 from .surface import frame_at_point, angle
@@ -139,47 +136,13 @@ class RollingBallFace:
         return a if a in self.range else None
 
 
-# 5-point Gauss-Legendre nodes and weights on [0, 1]
-_GL = [(0.5 - 0.5 * x, 0.5 * w) for x, w in (
-    (-0.9061798459386640, 0.2369268850561891), (-0.5384693101056831, 0.4786286704993665),
-    (0.0, 0.5688888888888889), (0.5384693101056831, 0.4786286704993665),
-    (0.9061798459386640, 0.2369268850561891))]
-
-
 class _Section:
     """One member of a chain, run from along-parameter a_start to a_end, with the
-    across-parameters of side 1 and side 2 and the arc length of its mid-line."""
-    SUB = 32  # Gauss subintervals for the arc-length table
+    across-parameters of side 1 and side 2 (cm: their mean, the mid-line)."""
 
     def __init__(self, rbf, a_start, a_end, c1, c2):
         self.rbf, self.a_start, self.a_end, self.c1, self.c2 = rbf, a_start, a_end, c1, c2
         self.cm = 0.5 * (c1 + c2)
-        self.table = [0.0]
-        for i in range(self.SUB):
-            self.table.append(self.table[-1] + self._length(i / self.SUB, (i + 1) / self.SUB))
-        self.length = self.table[-1]
-
-    def along(self, t):
-        return self.a_start + t * (self.a_end - self.a_start)
-
-    def _speed(self, t):
-        return self.rbf.derivative(self.along(t), self.cm, True).Length * abs(self.a_end - self.a_start)
-
-    def _length(self, t0, t1):
-        return (t1 - t0) * sum(w * self._speed(t0 + (t1 - t0) * x) for x, w in _GL)
-
-    def at_length(self, s):
-        """The along-parameter at arc length s from the start (Newton on the Gauss
-        arc length, so the samples are a smooth function of s)."""
-        i = min(max(bisect.bisect_right(self.table, s) - 1, 0), self.SUB - 1)
-        t0 = i / self.SUB
-        t = t0 + (s - self.table[i]) / max(self.table[i + 1] - self.table[i], 1e-300) / self.SUB
-        for _ in range(8):
-            step = (self.table[i] + self._length(t0, t) - s) / self._speed(t)
-            t -= step
-            if abs(step) < 1e-15:
-                break
-        return self.along(t)
 
 
 class FilletChain:
@@ -243,32 +206,7 @@ class FilletChain:
         if self.closed and len(self.members) > 1 and \
                 ends.get((id(m), self.sections[-1].a_end), (None,))[0] is not start:
             return "the fillet chain does not close up"
-        self.length = sum(sec.length for sec in self.sections)
         return None
-
-    def samples(self, n):
-        """n (section, along-parameter) pairs uniform in the mid-line's arc length, the
-        end point excluded when the chain is closed."""
-        out, acc, k = [], 0.0, 0
-        span = self.length / (n if self.closed else n - 1)
-        for j, sec in enumerate(self.sections):
-            last = j == len(self.sections) - 1
-            while k < n:
-                s = k * span - acc
-                if s > sec.length and not last:
-                    break
-                out.append((sec, sec.at_length(min(s, sec.length))))
-                k += 1
-            acc += sec.length
-        return out
-
-    def section_pairs(self, n):
-        """Per sample: (p1, tangent1, towards1, p2, tangent2, towards2) on sides 1 and 2,
-        as trimlines.pair_rows takes them."""
-        for sec, a in self.samples(n):
-            r, sgn = sec.rbf, (1.0 if sec.c2 > sec.c1 else -1.0)
-            yield (r.point(a, sec.c1), r.derivative(a, sec.c1, True), r.derivative(a, sec.c1, False) * sgn,
-                   r.point(a, sec.c2), r.derivative(a, sec.c2, True), r.derivative(a, sec.c2, False) * -sgn)
 
 
 def chains(rbfs):
