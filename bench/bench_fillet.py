@@ -30,16 +30,18 @@ def median_time(fn):
 
 CASES = [("box edge, R = 2", lambda: (shapes.box(), "Edge1"), 2.0),
          ("shaft on plate, R = 2", shapes.shaft_on_plate, 2.0),
-         ("loft (B-spline) / plane, R = 1.5", shapes.loft, 1.5)]
+         ("loft (B-spline) / plane, R = 1.5", shapes.loft, 1.5),
+         ("pipe tee (2 edges, one chain), R = 1", shapes.pipe_tee, 1.0)]
 
 print("| fillet | OCCT makeFillet (ms) | C2Blend (ms) | ratio | solve+fit | sew+BRepCheck "
       "| G2 check | verdict |")
 print("|---|---|---|---|---|---|---|---|")
 for name, make, radius in CASES:
-    shape, edge = make()
-    e = shape.getElement(edge)
-    t_occt, _ = median_time(lambda: shape.makeFillet(radius, [e]))
-    t_c2, (solid, rep) = median_time(lambda: fl.fillet(shape, [edge], radius))
+    shape, edges = make()
+    edges = [edges] if isinstance(edges, str) else edges
+    es = [shape.getElement(e) for e in edges]
+    t_occt, _ = median_time(lambda: shape.makeFillet(radius, es))
+    t_c2, (solid, rep) = median_time(lambda: fl.fillet(shape, edges, radius))
     st = rep["stage_seconds"]
     print("| %s | %.2f | %.1f | %.0fx | %.1f ms | %.1f ms | %.1f ms | %s |"
           % (name, 1e3 * t_occt, 1e3 * t_c2, t_c2 / t_occt, 1e3 * st["trimlines_solve_fit"],

@@ -28,7 +28,7 @@ import numpy as np
 
 MAX_NEWTON = 30
 NEWTON_DONE = 1e-10  # relative step after which one more Newton step is below rounding
-SUB_PER_SPAN = 2  # Gauss subintervals per knot span of the guide along the fillet
+SUB_PER_SPAN = 4  # Gauss subintervals per knot span of the guide along the fillet
 MIN_SUB = 8  # ... and at least this many per section
 WARM = 0.05  # start Newton from the last solution within this fraction of the section
 
@@ -72,13 +72,26 @@ class Contact:
         self.chain, self.radius = chain, radius
         self.f1, self.f2 = chain.sides
         self.signs = None
-        self.warm = {}  # section index -> (a, solution (u1, v1, u2, v2)) of the last solve
+        self.solved = [([], []) for _ in chain.sections]  # per section: sorted a, solutions
+        self.cache = {}  # (section, arc length) -> contact, shared by pairs(n) and pairs(2n)
         self.tables = [self._table(k) for k in range(len(chain.sections))]
         self.length = sum(t[-1][1] for t in self.tables)
 
     def _guess(self, sec, a):
         q1, q2 = sec.rbf.point(a, sec.c1), sec.rbf.point(a, sec.c2)
         return list(self.f1.Surface.parameter(q1)) + list(self.f2.Surface.parameter(q2))
+
+    def _warm(self, k, a):
+        """Newton's start at guide parameter a: the solution at the nearest parameter
+        solved before, if within WARM of the section, else OCCT's contact points."""
+        sec, (keys, xs) = self.chain.sections[k], self.solved[k]
+        i = bisect.bisect_left(keys, a)
+        near = [j for j in (i - 1, i) if 0 <= j < len(keys)]
+        if near:
+            j = min(near, key=lambda q: abs(keys[q] - a))
+            if abs(keys[j] - a) <= WARM * abs(sec.a_end - sec.a_start):
+                return list(xs[j])
+        return self._guess(sec, a)
 
     def _signs(self, x):
         """(g1, g2): the ball's side of each face, from OCCT's contact points x."""
@@ -99,9 +112,7 @@ class Contact:
         dl = d1.Length
         t0 = d1 * (1.0 / dl)
         t0p = (d2 - t0 * t0.dot(d2)) * (1.0 / dl)
-        a_warm, x = self.warm.get(k, (None, None))
-        if a_warm is None or abs(a - a_warm) > WARM * abs(sec.a_end - sec.a_start):
-            x = self._guess(sec, a)
+        x = self._warm(k, a)
         if self.signs is None:
             self.signs = self._signs(x)
         g1, g2 = self.signs
@@ -124,7 +135,10 @@ class Contact:
         else:
             raise ContactError("Newton's method for the exact rolling-ball contact did not "
                                "converge near (%.6g, %.6g, %.6g)" % (m.x, m.y, m.z))
-        self.warm[k] = (a, x)
+        keys, xs = self.solved[k]
+        i = bisect.bisect_left(keys, a)
+        keys.insert(i, a)
+        xs.insert(i, x)
         p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1])
         p2 = self.f2.Surface.value(x[2], x[3])
         c = p1 + n1 * g1
@@ -162,6 +176,11 @@ class Contact:
     def at_length(self, k, s):
         """The contact at spine arc length s from the start of section k (Newton on the
         Gauss arc length, so the samples are a smooth function of s)."""
+        if (k, s) not in self.cache:
+            self.cache[(k, s)] = self._at_length(k, s)
+        return self.cache[(k, s)]
+
+    def _at_length(self, k, s):
         table = self.tables[k]
         lengths = [q[1] for q in table]
         i = min(max(bisect.bisect_right(lengths, s) - 1, 0), len(table) - 2)
