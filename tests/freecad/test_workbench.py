@@ -191,6 +191,24 @@ def test_sphere_cap_exact_contact():
     assert any(abs(r["g2"] - 1.0) < 1e-2 for r in occt["edges"])  # 1/R at the plane
 
 
+def test_slanted_end_face_is_kept():
+    """A 10 x 10 x 20 box whose top is cut by a plane tilted 30 degrees about x: the
+    vertical edge at x = y = 0 ends on that slanted face. The blend's sections are
+    across the fillet, so its end section would leave the slanted face (by 1.0 here):
+    OCCT's face is kept with that reason, the solid is valid and the verdict is G1,
+    never G2."""
+    cutter = Part.makeBox(60, 60, 40, V(-30, -30, 15))
+    cutter.rotate(V(0, 0, 15), V(1, 0, 0), 30)
+    w = Part.makeBox(10, 10, 20).cut(cutter)
+    edge = next("Edge%d" % (i + 1) for i, e in enumerate(w.Edges)
+                if e.BoundBox.XMax < 1e-9 and e.BoundBox.YMax < 1e-9 and e.BoundBox.ZLength > 1)
+    solid, rep = C2Blend.fillet_report(w, [edge], 2.0, label="Wedge")
+    assert_valid(solid)
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    assert "leaves the end face" in rep["kept_occt_faces"][0]["reason"]
+    assert rep["verdict"] == "G1"
+
+
 # 4. blend faces between coaxial cylinders -----------------------------------------------
 def coaxial():
     a, b = Part.makeCylinder(1, 2), Part.makeCylinder(0.8, 2, V(0, 0, 3))
@@ -364,6 +382,19 @@ def test_failed_sewing_is_reported(monkeypatch):
     monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, tol: [])
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: sewing the blend faces .* failed"):
         C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
+
+
+def test_untraceable_contact_keeps_occt_face(monkeypatch):
+    """Fault injection: Newton's method for the exact contact gets no iterations, so the
+    contact cannot be traced. The fillet is not failed: OCCT's face is kept, the report
+    says why and the verdict is G1."""
+    from c2bwb.geometry import contact
+    monkeypatch.setattr(contact, "MAX_NEWTON", 0)
+    s, edge = shapes.shaft_on_plate()
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="ShaftPlate")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    assert "did not converge" in rep["kept_occt_faces"][0]["reason"]
 
 
 def test_undo_redo(boxdoc):
