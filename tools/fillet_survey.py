@@ -67,6 +67,12 @@ def parts():
     out.append(("slot-like plate, long top edge", sl,
                 names(sl, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 5) < 1e-9
                       and abs(e.BoundBox.YMax) < 1e-9), 1.0))
+    cutter = Part.makeBox(60, 60, 40, V(-30, -30, 15))
+    cutter.rotate(V(0, 0, 15), V(1, 0, 0), 30)
+    w = Part.makeBox(10, 10, 20).cut(cutter)
+    out.append(("box edge ending on a 30 degree slanted top", w,
+                names(w, lambda e: e.BoundBox.XMax < 1e-9 and e.BoundBox.YMax < 1e-9
+                      and e.BoundBox.ZLength > 1), 2.0))
     return out
 
 
