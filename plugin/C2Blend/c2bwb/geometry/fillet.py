@@ -28,7 +28,7 @@ from .rollingball import RollingBallFace, chains, interior_points, new_faces
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
-DATA_KEEP = 1e-6  # above this, the boundary data are too rough for a G2 blend: keep OCCT's face
+DATA_KEEP = 1e-6  # above this the boundary data are too rough for G2: keep OCCT's face
 ON_FACE = 10.0  # an end curve lies on its end face within this many fit tolerances
 
 
@@ -124,7 +124,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                           "blend" % (err, n))
     surface, fit = fit_surface(blend, tol_rel, where)
     b = Blended(chain, where, surface, fit, n, err)
-    for edge, face, v in _end_curves(b):
+    for _, face, v in _end_curves(b):
         gap = max(_off_surface(face.Surface, surface.value(u / 8.0, v)) for u in range(9))
         if gap > ON_FACE * fit["tolerance"]:
             raise NotReplaced("the blend's end section leaves the end face by %.1e (the end "
@@ -150,6 +150,17 @@ def _on_face(face, p, tol):
     return face.distToShape(Part.Vertex(p))[0] <= tol
 
 
+def _probe(face):
+    """A point inside face."""
+    return (interior_points(face, 3) or [face.CenterOfMass])[0]
+
+
+def _edge_on_face(edge, face, tol):
+    """True when edge lies on face (at 3 inner points, within tol)."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    return all(_on_face(face, edge.valueAt(a + x * (b - a)), tol) for x in (0.25, 0.5, 0.75))
+
+
 def _cut_face(face, tools, sharp, tol):
     """The pieces of an original face, cut along the edges `tools` lying on it, that do
     not touch any of the `sharp` edges the fillets consumed."""
@@ -173,7 +184,8 @@ def _update_tolerances(solid, faces):
                     t = a + (b - a) * j / 40.0
                     uv = c2.value(t)
                     q = surf.value(uv.x, uv.y)
-                    worst = max(worst, ((place.multVec(q) if place else q) - e.valueAt(t)).Length)
+                    q = place.multVec(q) if place else q
+                    worst = max(worst, (q - e.valueAt(t)).Length)
             if worst > e.Tolerance:
                 e.fixTolerance(1.5 * worst)
 
@@ -191,11 +203,12 @@ def assemble(shape, result, blended, fillet_faces, where):
     # the original faces the blends touch, with the blend curves lying on each
     touched = []  # [(original face, [tool edges])]
     for b in blended:
-        curves = [(b.chain.sides[0], b.surface.uIso(0.0)), (b.chain.sides[1], b.surface.uIso(1.0))]
+        curves = [(b.chain.sides[0], b.surface.uIso(0.0)),
+                  (b.chain.sides[1], b.surface.uIso(1.0))]
         curves += [(face, b.surface.vIso(v)) for _, face, v in _end_curves(b)]
         for res_face, curve in curves:
-            probe = interior_points(res_face, 3)[0]
-            orig = min(shape.Faces, key=lambda g: g.distToShape(Part.Vertex(probe))[0])
+            probe = Part.Vertex(_probe(res_face))
+            orig = min(shape.Faces, key=lambda g: g.distToShape(probe)[0])
             entry = next((t for t in touched if t[0].isSame(orig)), None)
             if entry is None:
                 entry = (orig, [])
@@ -207,9 +220,7 @@ def assemble(shape, result, blended, fillet_faces, where):
                  Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))))[0] > tol]
     for orig, tools in touched:
         # edges of OCCT fillets kept on this face bound it too
-        tools += [e for k in kept_fillets for e in k.Edges
-                  if all(_on_face(orig, e.valueAt(e.FirstParameter + x * (e.LastParameter - e.FirstParameter)), tol)
-                         for x in (0.25, 0.5, 0.75))]
+        tools += [e for k in kept_fillets for e in k.Edges if _edge_on_face(e, orig, tol)]
         try:
             pieces = _cut_face(orig, tools, sharp, tol)
         except Exception as ex:
@@ -220,8 +231,8 @@ def assemble(shape, result, blended, fillet_faces, where):
     for f in result.Faces:
         if any(f.isSame(d) for d in drop):
             continue
-        if any(_on_face(orig, p, tol) for orig, _ in touched
-               for p in interior_points(f, 3)[:1]) and not any(f.isSame(k) for k in kept_fillets):
+        if not any(f.isSame(k) for k in kept_fillets) and \
+                any(_on_face(orig, _probe(f), tol) for orig, _ in touched):
             continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
     sewn = Part.Compound(faces_out)
