@@ -26,6 +26,8 @@ import bisect
 
 import numpy as np
 
+from .surface import Frame
+
 MAX_NEWTON = 30
 NEWTON_DONE = 1e-10  # relative step after which one more Newton step is below rounding
 SUB_PER_SPAN = 4  # Gauss subintervals per knot span of the guide along the fillet
@@ -44,22 +46,14 @@ class ContactError(Exception):
 
 
 def _normal_frame(face, u, v):
-    """Point, S_u, S_v, unit normal (oriented like the face) and its u and v
-    derivatives (Weingarten: the normal part of dN removed, divided by |N|)."""
-    s = face.Surface
-    su, sv = s.getDN(u, v, 1, 0), s.getDN(u, v, 0, 1)
-    suu, suv, svv = s.getDN(u, v, 2, 0), s.getDN(u, v, 1, 1), s.getDN(u, v, 0, 2)
-    big = su.cross(sv)
-    length = big.Length
-    if length == 0.0:
-        raise ContactError("the face is degenerate (S_u x S_v = 0) at (%g, %g)" % (u, v))
-    n = big * (1.0 / length)
-    dnu, dnv = suu.cross(sv) + su.cross(suv), suv.cross(sv) + su.cross(svv)
-    nu = (dnu - n * n.dot(dnu)) * (1.0 / length)
-    nv = (dnv - n * n.dot(dnv)) * (1.0 / length)
-    if face.Orientation == "Reversed":
-        n, nu, nv = -n, -nu, -nv
-    return s.value(u, v), su, sv, n, nu, nv
+    """Point, S_u, S_v, unit normal (oriented like the face) and its u and v derivatives
+    (surface.Frame). Raises ContactError where the face is degenerate."""
+    try:
+        f = Frame(face, u, v)
+    except ValueError as ex:
+        raise ContactError("the face is degenerate: %s" % ex) from None
+    nu, nv = f.normal_derivatives()
+    return f.p, f.su, f.sv, f.n, nu, nv
 
 
 class Contact:

@@ -35,6 +35,15 @@ class Frame:
         n.normalize()
         self.n = -n if face.Orientation == "Reversed" else n
 
+    def normal_derivatives(self):
+        """(dn/du, dn/dv) of the oriented unit normal n (Weingarten: the part of the
+        derivative of S_u x S_v along n removed, divided by |S_u x S_v|)."""
+        big = self.su.cross(self.sv)
+        scale = (-1.0 if self.face.Orientation == "Reversed" else 1.0) / big.Length
+        return tuple((d - self.n * self.n.dot(d)) * scale
+                     for d in (self.suu.cross(self.sv) + self.su.cross(self.suv),
+                               self.suv.cross(self.sv) + self.su.cross(self.svv)))
+
     def coords(self, d):
         """(a, b) with d = a S_u + b S_v for a tangent vector d (least squares)."""
         e, f, g = self.su.dot(self.su), self.su.dot(self.sv), self.sv.dot(self.sv)
