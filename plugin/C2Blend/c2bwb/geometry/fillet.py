@@ -95,13 +95,15 @@ def sample_rows(chain, contact, n, nrows, tension, where):
 
 
 class Blended:
-    """A rolling-ball chain replaced by a PDE blend: surface, face, fit and data facts."""
+    """A rolling-ball chain replaced by a PDE blend: surface, face, fit and data facts;
+    end_curves: (end edge, end face, v) per end of the chain (see _end_curves)."""
 
     def __init__(self, chain, where, surface, fit, samples, data_rel):
         self.chain, self.where, self.surface, self.fit = chain, where, surface, fit
         self.samples, self.data_rel = samples, data_rel
         self.face = Part.Face(surface)
         self.v_range = surface.bounds()[2:4]
+        self.end_curves = _end_curves(self)
 
 
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
@@ -124,7 +126,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                           "blend" % (err, n))
     surface, fit = fit_surface(blend, tol_rel, where)
     b = Blended(chain, where, surface, fit, n, err)
-    for _, face, v in _end_curves(b):
+    for _, face, v in b.end_curves:
         gap = max(_off_surface(face.Surface, surface.value(u / 8.0, v)) for u in range(9))
         if gap > ON_FACE * fit["tolerance"]:
             raise NotReplaced("the blend's end section leaves the end face by %.1e (the end "
@@ -205,7 +207,7 @@ def assemble(shape, result, blended, fillet_faces, where):
     for b in blended:
         curves = [(b.chain.sides[0], b.surface.uIso(0.0)),
                   (b.chain.sides[1], b.surface.uIso(1.0))]
-        curves += [(face, b.surface.vIso(v)) for _, face, v in _end_curves(b)]
+        curves += [(face, b.surface.vIso(v)) for _, face, v in b.end_curves]
         for res_face, curve in curves:
             probe = Part.Vertex(_probe(res_face))
             orig = min(shape.Faces, key=lambda g: g.distToShape(probe)[0])
