@@ -62,6 +62,25 @@ static double median(double *x, int n)
 
 static int g_reps = 9;
 
+/* Creates the blend of pb g_reps times; the median time (s) goes to *secs and the last
+ * blend to *out (NULL on failure; the caller destroys it). Returns the last status. */
+static c2b_status timed_blend_create(const c2b_problem *pb, c2b_blend **out, double *secs,
+                                     c2b_error *err)
+{
+    double t[64];
+    c2b_status st = C2B_OK;
+    *out = NULL;
+    for (int r = 0; r < g_reps; r++) {
+        c2b_blend_destroy(*out);
+        *out = NULL;
+        double t0 = now();
+        st = c2b_blend_create(pb, out, err);
+        t[r] = now() - t0;
+    }
+    *secs = median(t, g_reps);
+    return st;
+}
+
 /* median time (s) of: create + evaluate an n x n grid, for the exact blend (M = 0) or
  * thesis-approx with M terms */
 static double time_solve(const c2b_problem *pb, const ex_thesis *x, int M, int n)
@@ -229,37 +248,25 @@ static int seed001_table(out *o)
              ex_seed001_error(NS * NS, app, ref), pub, 1e6 * median(t, g_reps));
         c2b_navier_destroy(nv);
     }
-    double t[64];
-    for (int r = 0; r < g_reps; r++) {
-        c2b_blend *b = NULL;
-        double t0 = now();
-        c2b_blend_create(c2b_spec_problem(full), &b, &err);
-        t[r] = now() - t0;
-        c2b_blend_destroy(b);
-    }
-    emit(o, "| closed form (C2Blend) | all of eq. 17 | 0 (reference) | 0 | %.3g |\n", 1e6 * median(t, g_reps));
+    double t_full;
+    c2b_blend *bfull = NULL;
+    timed_blend_create(c2b_spec_problem(full), &bfull, &t_full, &err);
+    c2b_blend_destroy(bfull);
+    emit(o, "| closed form (C2Blend) | all of eq. 17 | 0 (reference) | 0 | %.3g |\n", 1e6 * t_full);
     static const int NF[2] = {20, 100};
     static const double pubF[2] = {6.565263e-2, 6.513351e-2};
     for (int k = 0; k < 2; k++) {
         static ex_fourier_problem fq;
         ex_fourier_init(&fq, NF[k]);
         c2b_blend *bq = NULL;
-        double tq[64];
-        c2b_status st = C2B_OK;
-        for (int r = 0; r < g_reps; r++) {
-            c2b_blend_destroy(bq);
-            bq = NULL;
-            double t0 = now();
-            st = c2b_blend_create(&fq.pb, &bq, &err);
-            tq[r] = now() - t0;
-        }
-        if (st) {
+        double tq;
+        if (timed_blend_create(&fq.pb, &bq, &tq, &err)) {
             emit(o, "| Fourier series (eqs. 20-21) | N = %d | fails: %s | %.6e | — |\n", NF[k], err.msg, pubF[k]);
             continue;
         }
         c2b_blend_eval_grid(bq, NS, u, NS, v, 0, app, &err);
         emit(o, "| Fourier series (eqs. 20-21, modes solved exactly) | N = %d | %.6e | %.6e | %.3g |\n", NF[k],
-             ex_seed001_error(NS * NS, app, ref), pubF[k], 1e6 * median(tq, g_reps));
+             ex_seed001_error(NS * NS, app, ref), pubF[k], 1e6 * tq);
         c2b_blend_destroy(bq);
     }
     /* pseudo-spectral (eqs. 22-23): the N-term Fourier solution plus the remainder
