@@ -14,6 +14,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .fillet import DATA_REL, check_params
+from .surface import frame_at_point
 from .trimlines import ROWS, pair_rows, spec_from_rows
 
 
@@ -93,9 +94,10 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
             a, b = t1.param(s), t2.param(s)
             p1, p2 = edge1.valueAt(a), edge2.valueAt(b)
             g1, g2 = edge1.tangentAt(a), edge2.tangentAt(b)
-            return p1, g1, t1.outward(p1, g1), p2, g2, t2.outward(p2, g2)
+            return (frame_at_point(face1, p1), g1, t1.outward(p1, g1),
+                    frame_at_point(face2, p2), g2, t2.outward(p2, g2))
         fractions = (k / n if t1.closed else k / (n - 1) for k in range(n))
-        return pair_rows(face1, face2, (pair(s) for s in fractions), nrows, tension, where)
+        return pair_rows((pair(s) for s in fractions), nrows, tension, where)
 
     kernel, n, err = solve_sampled(
         rows_at,

@@ -96,9 +96,9 @@ class Contact:
                    key=lambda g: ((p1 + n1 * g[0]) - (p2 + n2 * g[1])).Length)
 
     def solve(self, k, a):
-        """The contact in section k at guide parameter a: (p1, p2, c, t, speed) with
-        t the unit spine tangent (oriented like the section) and speed = |dc/da|
-        signed so that arc length grows along the section."""
+        """The contact in section k at guide parameter a: (p1, p2, c, t, speed, x) with
+        t the unit spine tangent (oriented like the section), speed = |dc/da| signed so
+        that arc length grows along the section, and x = (u1, v1, u2, v2)."""
         sec = self.chain.sections[k]
         r, s = sec.rbf, sec.rbf.face.Surface
         m, d1 = r.point(a, sec.cm), r.derivative(a, sec.cm, True)
@@ -144,7 +144,7 @@ class Contact:
         if t.dot(t0) < 0.0:
             t = -t
         speed = (d1.dot(t0) - (c - m).dot(t0p)) / t.dot(t0)
-        return p1, p2, c, t, (speed if sec.a_end >= sec.a_start else -speed)
+        return p1, p2, c, t, (speed if sec.a_end >= sec.a_start else -speed), x
 
     def _integral(self, k, a0, a1):
         """Spine arc length from guide parameter a0 to a1 in section k (Gauss)."""
@@ -189,8 +189,9 @@ class Contact:
 
     def pairs(self, n):
         """n samples uniform in spine arc length (the end point excluded on a closed
-        chain): (p1, t, p2 - p1, p2, t, p1 - p2) each, as trimlines.pair_rows takes
-        them. The cross direction on each face is then t x N, in the ball's plane."""
+        chain): (frame1, t, p2 - p1, frame2, t, p1 - p2) each, with the sides' frames
+        at the contact points, as trimlines.pair_rows takes them. The cross direction on
+        each face is then t x N, in the ball's plane."""
         closed = self.chain.closed
         span = self.length / (n if closed else n - 1)
         out, acc, j = [], 0.0, 0
@@ -200,8 +201,9 @@ class Contact:
                 s = j * span - acc
                 if s > total and not last:
                     break
-                p1, p2, _, t, _ = self.at_length(k, min(s, total))
-                out.append((p1, t, p2 - p1, p2, t, p1 - p2))
+                p1, p2, _, t, _, x = self.at_length(k, min(s, total))
+                out.append((Frame(self.f1, x[0], x[1]), t, p2 - p1,
+                            Frame(self.f2, x[2], x[3]), t, p1 - p2))
                 j += 1
             acc += total
         return out

@@ -91,7 +91,7 @@ def check_params(radius, continuity, shape_params, tension, label):
 
 def sample_rows(chain, contact, n, nrows, tension, where):
     """Cross-boundary rows at n corresponding points of the exact contact of a chain."""
-    return pair_rows(chain.sides[0], chain.sides[1], contact.pairs(n), nrows, tension, where)
+    return pair_rows(contact.pairs(n), nrows, tension, where)
 
 
 class Blended:

@@ -14,7 +14,6 @@ second fundamental form equal to the face's along the trimline (G2) for any s_i 
 import math
 
 from ..errors import C2BlendError
-from .surface import frame_at_point
 
 ROWS = {"C1": 2, "C2": 3, "C3": 4}
 # the PDE's shape parameters per continuity (README "What the kernel computes")
@@ -38,15 +37,14 @@ def shape_for(continuity, shape_params):
                      % (continuity, len(names), ", ".join(names), len(values)))
 
 
-def side_rows(face, point, tangent, towards, scale, nrows, sign):
+def side_rows(fr, tangent, towards, scale, nrows, sign):
     """Cross-boundary rows at one trimline point.
 
-    face: the primary face; point: a point on (or within tolerance of) the trimline;
-    tangent: the trimline's tangent there; towards: any vector pointing from the face
-    into the blend (fixes the sign of d); scale: s > 0; sign: +1 for u = 0, -1 for u = 1.
+    fr: the primary face's surface.Frame at the trimline point; tangent: the trimline's
+    tangent there; towards: any vector pointing from the face into the blend (fixes the
+    sign of d); scale: s > 0; sign: +1 for u = 0, -1 for u = 1.
     Returns a list of nrows (x, y, z) tuples.
     """
-    fr = frame_at_point(face, point)
     d = fr.n.cross(tangent)
     if d.Length == 0.0:
         raise ValueError("trimline tangent is parallel to the face normal")
@@ -61,21 +59,22 @@ def side_rows(face, point, tangent, towards, scale, nrows, sign):
     return [tuple(r) for r in rows]
 
 
-def pair_rows(face1, face2, pairs, nrows, tension, where):
+def pair_rows(pairs, nrows, tension, where):
     """Rows of both sides at corresponding trimline points.
 
-    pairs: (p1, tangent1, towards1, p2, tangent2, towards2) per sample, as side_rows
-    takes them; both sides use the cross speed s = tension * |p2 - p1|.
+    pairs: (frame1, tangent1, towards1, frame2, tangent2, towards2) per sample, with the
+    frames of face 1 and face 2 at the two points, as side_rows takes them; both sides
+    use the cross speed s = tension * |p2 - p1|.
     Returns (rows0, rows1). Raises C2BlendError naming `where` where the trimlines touch.
     """
     rows0, rows1 = [], []
-    for p1, g1, out1, p2, g2, out2 in pairs:
-        s = tension * (p2 - p1).Length
+    for f1, g1, out1, f2, g2, out2 in pairs:
+        s = tension * (f2.p - f1.p).Length
         if s <= 0:
             raise C2BlendError("the trimlines touch at (%.6g, %.6g, %.6g); a blend needs a gap"
-                               % (p1.x, p1.y, p1.z), where, "selection")
-        rows0.append(side_rows(face1, p1, g1, out1, s, nrows, 1))
-        rows1.append(side_rows(face2, p2, g2, out2, s, nrows, -1))
+                               % (f1.p.x, f1.p.y, f1.p.z), where, "selection")
+        rows0.append(side_rows(f1, g1, out1, s, nrows, 1))
+        rows1.append(side_rows(f2, g2, out2, s, nrows, -1))
     return rows0, rows1
 
 
