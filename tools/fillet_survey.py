@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """C2 Fillet on a handful of typical parts: what each gives (G2 blend, or OCCT's faces
-kept and why), whether the solid is valid, and the time. With --validation it also times
+kept and why), the worst continuity over its trimlines, whether the solid is valid, the
+time, and the same check on OCCT's own fillet of the same edges. With --validation it also times
 OCCT's validity checks on the filleted shaft-on-plate solid.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py [--validation]
@@ -24,6 +25,7 @@ import Part  # noqa: E402
 
 import C2Blend  # noqa: E402
 import shapes  # noqa: E402
+from c2bwb.geometry.rollingball import RollingBallFace, new_faces  # noqa: E402
 
 V = FreeCAD.Vector
 
@@ -43,6 +45,11 @@ def parts():
     """(name, solid, edge names, radius) of each part."""
     out = []
     b = Part.makeBox(10, 10, 10)
+    out.append(("box, one edge", b, ["Edge1"], 2.0))
+    s, n = shapes.shaft_on_plate()
+    out.append(("shaft on plate", s, [n], 2.0))
+    s, n = shapes.loft()
+    out.append(("loft (B-spline face) / plane", s, [n], 1.5))
     out.append(("box, 4 top edges", b, names(b, lambda e: abs(e.BoundBox.ZMin - 10) < 1e-9
                                           and abs(e.BoundBox.ZMax - 10) < 1e-9), 2.0))
     c = Part.makeCylinder(5, 10)
@@ -76,21 +83,41 @@ def parts():
     return out
 
 
+def occt_check(shape, edges, r):
+    """The continuity check on OCCT's own fillet of the same edges, across its contact
+    edges: 'verdict, angle, jump' (worst over the edges)."""
+    res = shape.makeFillet(r, [shape.getElement(e) for e in edges])
+    ff = new_faces(shape, res)
+    contacts = [e for f in ff for e, _ in RollingBallFace(res, f, ff).contacts]
+    if not contacts:
+        return "no contact edges"
+    rep = C2Blend.check(res, contacts)
+    return "%s, %.1e rad, %.2g rel" % (rep["verdict"], max(x["g1"] for x in rep["edges"]),
+                                       max(x["g2_rel"] for x in rep["edges"]))
+
+
 def survey():
-    print("| part | edges | R | verdict | valid | blends | kept | ms | kept because |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| part | edges | R | verdict | valid | blends | kept | worst angle (rad) | worst "
+          "jump (rel) | samples | data error | ms | kept because | OCCT's fillet: check |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, shape, edges, r in parts():
         t0 = time.perf_counter()
         try:
             solid, rep = C2Blend.fillet_report(shape, edges, r)
         except C2Blend.Error as ex:
-            print("| %s | %d | %g | error | | | | | %s |" % (name, len(edges), r, ex))
+            print("| %s | %d | %g | error |%s %s | |" % (name, len(edges), r, " |" * 8, ex))
             continue
         ms = 1e3 * (time.perf_counter() - t0)
         why = sorted({k["reason"] for k in rep["kept_occt_faces"]})
-        print("| %s | %d | %g | %s | %s | %d | %d | %.0f | %s |"
-              % (name, len(edges), r, rep["verdict"], solid.isValid(), len(rep["blends"]),
-                 len(rep["kept_occt_faces"]), ms, "; ".join(why)))
+        tl, bl = rep["trimlines"], rep["blends"]
+        worst = ("%.1e | %.1e" % (max(t["g1"] for t in tl), max(t["g2_rel"] for t in tl))
+                 if tl else " | ")
+        data = ("%s | %.1e" % ("/".join(str(b["samples"]) for b in bl),
+                               max(b["data_error"] for b in bl)) if bl else " | ")
+        print("| %s | %d | %g | %s | %s | %d | %d | %s | %s | %.0f | %s | %s |"
+              % (name, len(edges), r, rep["verdict"], solid.isValid(), len(bl),
+                 len(rep["kept_occt_faces"]), worst, data, ms, "; ".join(why),
+                 occt_check(shape, edges, r)))
 
 
 def median_ms(f, n=5):
