@@ -80,6 +80,14 @@ def parts():
     out.append(("box edge ending on a 30 degree slanted top", w,
                 names(w, lambda e: e.BoundBox.XMax < 1e-9 and e.BoundBox.YMax < 1e-9
                       and e.BoundBox.ZLength > 1), 2.0))
+    cb = Part.makeBox(20, 10, 10).fuse(Part.makeCylinder(8, 10, V(20, 5, 0))).removeSplitter()
+    out.append(("box edge ending on a cylinder", cb,
+                names(cb, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
+                      and abs(e.BoundBox.YMax) < 1e-9), 1.0))
+    cc = Part.makeBox(30, 10, 10).cut(Part.makeCylinder(15, 10, V(40, 5, 0)))
+    out.append(("box edge ending on a concave cylinder", cc,
+                names(cc, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
+                      and abs(e.BoundBox.YMax) < 1e-9), 1.0))
     return out
 
 

@@ -191,12 +191,21 @@ def test_sphere_cap_exact_contact():
     assert any(abs(r["g2"] - 1.0) < 1e-2 for r in occt["edges"])  # 1/R at the plane
 
 
-def test_slanted_end_face_is_kept():
-    """A 10 x 10 x 20 box whose top is cut by a plane tilted 30 degrees about x: the
-    vertical edge at x = y = 0 ends on that slanted face. The blend's sections are
-    across the fillet, so its end section would leave the slanted face (by 1.0 here):
-    OCCT's face is kept with that reason, the solid is valid and the verdict is G1,
-    never G2."""
+def blend_faces(solid):
+    return [f for f in solid.Faces if f.Surface.__class__.__name__ == "BSplineSurface"]
+
+
+def edge_points(edge, n=21):
+    a, b = edge.FirstParameter, edge.LastParameter
+    return [edge.valueAt(a + (b - a) * k / (n - 1)) for k in range(n)]
+
+
+def test_slanted_end_face():
+    """A 10 x 10 x 20 box whose top is cut by a plane tilted 30 degrees about x,
+    z = 15 + y / sqrt(3): the vertical edge at x = y = 0 ends on that slanted face, which
+    is not across the fillet. The blend is traced past it and cut back by the plane: G2,
+    valid, its end edge on the plane, and its trimlines (y = 2 on x = 0, x = 2 on y = 0,
+    the ball's contact on two perpendicular planes) run from the bottom to the plane."""
     cutter = Part.makeBox(60, 60, 40, V(-30, -30, 15))
     cutter.rotate(V(0, 0, 15), V(1, 0, 0), 30)
     w = Part.makeBox(10, 10, 20).cut(cutter)
@@ -204,9 +213,86 @@ def test_slanted_end_face_is_kept():
                 if e.BoundBox.XMax < 1e-9 and e.BoundBox.YMax < 1e-9 and e.BoundBox.ZLength > 1)
     solid, rep = C2Blend.fillet_report(w, [edge], 2.0, label="Wedge")
     assert_valid(solid)
-    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
-    assert "leaves the end face" in rep["kept_occt_faces"][0]["reason"]
-    assert rep["verdict"] == "G1"
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    (face,) = blend_faces(solid)
+    corners = [V(0, 2, 0), V(2, 0, 0), V(0, 2, 15 + 2 / math.sqrt(3)), V(2, 0, 15)]
+    for c in corners:
+        assert min((v.Point - c).Length for v in face.Vertexes) < 1e-6, c
+    on_plane = [e for e in face.Edges
+                if all(abs(p.z - 15 - p.y / math.sqrt(3)) < 1e-6 for p in edge_points(e))]
+    assert len(on_plane) == 1 and on_plane[0].Length > 2.0
+    # the slanted face of the solid ends on that same edge
+    assert len(ck.edge_faces(solid, on_plane[0])) == 2
+
+
+def test_curved_end_face():
+    """A 30 x 10 x 10 box cut by a vertical cylinder of radius 15 about (40, 5): the top
+    front edge ends on that concave face. The blend is cut back by the cylinder: G2 and
+    valid, its end edge on the cylinder, and its trimlines (y = 1 on the top, z = 9 on
+    the front) end where they meet it, at x = 40 - sqrt(209) and 40 - sqrt(200)."""
+    cc = Part.makeBox(30, 10, 10).cut(Part.makeCylinder(15, 10, V(40, 5, 0)))
+    edge = next("Edge%d" % (i + 1) for i, e in enumerate(cc.Edges)
+                if isinstance(e.Curve, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
+                and abs(e.BoundBox.YMax) < 1e-9)
+    solid, rep = C2Blend.fillet_report(cc, [edge], 1.0, label="Cut")
+    assert_valid(solid)
+    assert_g2(rep)
+    (face,) = blend_faces(solid)
+    for c in (V(40 - math.sqrt(209), 1, 10), V(40 - math.sqrt(200), 0, 9), V(0, 1, 10),
+              V(0, 0, 9)):
+        assert min((v.Point - c).Length for v in face.Vertexes) < 1e-6, c
+    on_cylinder = [e for e in face.Edges
+                   if all(abs(math.hypot(p.x - 40, p.y - 5) - 15) < 1e-6 for p in edge_points(e))]
+    assert len(on_cylinder) == 1
+
+
+def test_end_face_extended_by_occt_is_kept():
+    """A box edge that ends where a cylinder bulges out of the box's front: OCCT ends
+    its fillet on a part of the cylinder's surface that is inside the original solid
+    (it adds that face part). The blend cannot be joined to the original face there,
+    so OCCT's face is kept, with that reason, and the verdict is G1."""
+    cb = Part.makeBox(20, 10, 10).fuse(Part.makeCylinder(8, 10, V(20, 5, 0))).removeSplitter()
+    edge = next("Edge%d" % (i + 1) for i, e in enumerate(cb.Edges)
+                if isinstance(e.Curve, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
+                and abs(e.BoundBox.YMax) < 1e-9)
+    solid, rep = C2Blend.fillet_report(cb, [edge], 1.0, label="Boss")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    assert "not on the original solid's face" in rep["kept_occt_faces"][0]["reason"]
+    assert rep["kept_occt_faces"][0]["where"] == "Boss." + edge
+
+
+def test_mitres_on_box_top_edges():
+    """The four top edges of a 10 mm box at R = 2: the fillets meet at the corners above
+    the sharp vertical edges (mitres). Each blend is traced past its ends and cut by its
+    neighbour. All eight trimlines are G2 and the solid is valid. By symmetry each mitre
+    lies in the vertical plane bisecting its corner and runs from (0, 0, 8) (the top of
+    the vertical edge, where the side trimlines z = 8 meet) to (2, 2, 10) (where the top
+    trimlines x = 2 and y = 2 cross); the top face left is the 6 x 6 square."""
+    box = shapes.box()
+    top = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
+           if abs(e.BoundBox.ZMin - 10) < 1e-9 and abs(e.BoundBox.ZMax - 10) < 1e-9]
+    solid, rep = C2Blend.fillet_report(box, top, 2.0, label="Box")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 4 and len(rep["trimlines"]) == 8
+    assert not rep["kept_occt_faces"]
+    faces = blend_faces(solid)
+    mitres = [e for e in solid.Edges
+              if sum(1 for f in faces if any(e.isSame(g) for g in f.Edges)) == 2]
+    assert len(mitres) == 4
+    for e in mitres:
+        ends = sorted((v.Point for v in e.Vertexes), key=lambda p: p.z)
+        cx, cy = (0 if ends[0].x < 5 else 10), (0 if ends[0].y < 5 else 10)
+        assert (ends[0] - V(cx, cy, 8)).Length < 1e-6
+        assert (ends[1] - V(abs(cx - 2), abs(cy - 2), 10)).Length < 1e-6
+        for p in edge_points(e):
+            assert abs(abs(p.x - cx) - abs(p.y - cy)) < 1e-6, p
+    (top_face,) = [f for f in solid.Faces if f.Surface.isPlanar()
+                   and abs(f.BoundBox.ZMin - 10) < 1e-9 and abs(f.BoundBox.ZMax - 10) < 1e-9]
+    assert top_face.Area == pytest.approx(36.0, abs=1e-6)
+    occt_jump(box, top, 2.0)
 
 
 # 4. blend faces between coaxial cylinders -----------------------------------------------
@@ -418,8 +504,9 @@ def test_occt_fillet_reports_g1_jump():
 
 
 def test_four_parallel_edges_and_a_corner():
-    """Four vertical box edges: four G2 blends sharing the top and bottom faces. Two
-    edges meeting at a vertex: OCCT's corner patch is kept and the report says G1."""
+    """Four vertical box edges: four G2 blends sharing the top and bottom faces. The three
+    edges meeting at the vertex (0, 0, 10): OCCT's corner patch is kept and the report
+    says G1."""
     box = shapes.box()
     vertical = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
                 if abs(e.tangentAt(e.FirstParameter).z) > 0.99]
@@ -427,7 +514,10 @@ def test_four_parallel_edges_and_a_corner():
     assert_valid(solid)
     assert_g2(rep)
     assert len(rep["blends"]) == 4 and len(rep["trimlines"]) == 8
-    solid, rep = C2Blend.fillet_report(box, ["Edge1", "Edge2"], 2.0, label="Box")
+    corner = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
+              if min((v.Point - V(0, 0, 10)).Length for v in e.Vertexes) < 1e-9]
+    assert len(corner) == 3
+    solid, rep = C2Blend.fillet_report(box, corner, 2.0, label="Box")
     assert_valid(solid)
     assert rep["verdict"] == "G1" and rep["kept_occt_faces"] and not rep["blends"]
     assert all("corner" in k["reason"] or "fillet" in k["reason"] for k in rep["kept_occt_faces"])

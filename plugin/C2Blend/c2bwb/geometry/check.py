@@ -83,9 +83,10 @@ def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
     return worst
 
 
-def trimline_points(surface, side, n=101):
-    """(point, tangent, (u, v)) at n v-midpoints of the u = side trimline of surface."""
-    v0, v1 = surface.bounds()[2:4]
+def trimline_points(surface, side, n=101, v_range=None):
+    """(point, tangent, (u, v)) at n v-midpoints of the u = side trimline of surface,
+    over v_range (default: the surface's whole v-range)."""
+    v0, v1 = v_range or surface.bounds()[2:4]
     out = []
     for k in range(n):
         v = v0 + (v1 - v0) * (k + 0.5) / n

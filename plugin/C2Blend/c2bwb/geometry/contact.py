@@ -26,6 +26,7 @@ import bisect
 
 import numpy as np
 
+from .rollingball import Section
 from .surface import Frame
 
 MAX_NEWTON = 30
@@ -56,19 +57,41 @@ def _normal_frame(face, u, v):
     return f.p, f.su, f.sv, f.n, nu, nv
 
 
+def _extended(sections, extend):
+    """The chain's sections, the first started extend[0] earlier and the last ended
+    extend[1] later (lengths along the guide's mid-line, converted to guide parameter
+    by its speed at the end)."""
+    out = list(sections)
+    for i, length in ((0, extend[0]), (-1, extend[1])):
+        if length <= 0.0:
+            continue
+        sec = out[i]
+        a = sec.a_start if i == 0 else sec.a_end
+        da = length / sec.rbf.derivative(a, sec.cm, True).Length
+        if (sec.a_end > sec.a_start) == (i == 0):
+            da = -da
+        out[i] = Section(sec.rbf, sec.a_start + (da if i == 0 else 0.0),
+                          sec.a_end + (da if i != 0 else 0.0), sec.c1, sec.c2)
+    return out
+
+
 class Contact:
     """Exact contact of a ball of radius R rolling on a FilletChain's two sides.
 
     pairs(n) gives n samples uniform in the spine's arc length, as
-    trimlines.pair_rows takes them. Raises ContactError where it cannot."""
+    trimlines.pair_rows takes them. extend: (start, end), lengths (model units, along
+    the guide's mid-line) by which an open chain is traced past its ends, on the
+    faces' underlying surfaces (ends.py trims the blend back). Raises ContactError
+    where it cannot."""
 
-    def __init__(self, chain, radius):
+    def __init__(self, chain, radius, extend=(0.0, 0.0)):
         self.chain, self.radius = chain, radius
         self.f1, self.f2 = chain.sides
+        self.sections = _extended(chain.sections, extend)
         self.signs = None
-        self.solved = [([], []) for _ in chain.sections]  # per section: sorted a, solutions
+        self.solved = [([], []) for _ in self.sections]  # per section: sorted a, solutions
         self.cache = {}  # (section, arc length) -> contact, shared by pairs(n) and pairs(2n)
-        self.tables = [self._table(k) for k in range(len(chain.sections))]
+        self.tables = [self._table(k) for k in range(len(self.sections))]
         self.length = sum(t[-1][1] for t in self.tables)
 
     def _guess(self, sec, a):
@@ -78,7 +101,7 @@ class Contact:
     def _warm(self, k, a):
         """Newton's start at guide parameter a: the solution at the nearest parameter
         solved before, if within WARM of the section, else OCCT's contact points."""
-        sec, (keys, xs) = self.chain.sections[k], self.solved[k]
+        sec, (keys, xs) = self.sections[k], self.solved[k]
         i = bisect.bisect_left(keys, a)
         near = [j for j in (i - 1, i) if 0 <= j < len(keys)]
         if near:
@@ -99,7 +122,7 @@ class Contact:
         """The contact in section k at guide parameter a: (p1, p2, c, t, speed, x) with
         t the unit spine tangent (oriented like the section), speed = |dc/da| signed so
         that arc length grows along the section, and x = (u1, v1, u2, v2)."""
-        sec = self.chain.sections[k]
+        sec = self.sections[k]
         r, s = sec.rbf, sec.rbf.face.Surface
         m, d1 = r.point(a, sec.cm), r.derivative(a, sec.cm, True)
         d2 = s.getDN(a, sec.cm, 2, 0) if r.along == 0 else s.getDN(sec.cm, a, 0, 2)
@@ -152,7 +175,7 @@ class Contact:
 
     def _table(self, k):
         """[(a, arc length from the section's start)] at the subinterval ends."""
-        sec = self.chain.sections[k]
+        sec = self.sections[k]
         s = sec.rbf.face.Surface
         knots = getattr(s, "getUKnots" if sec.rbf.along == 0 else "getVKnots", list)()
         lo, hi = sorted((sec.a_start, sec.a_end))

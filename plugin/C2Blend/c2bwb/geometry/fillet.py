@@ -7,13 +7,15 @@ tangentially end to end (a tangent chain of edges, or an edge OCCT split at a se
 one chain. For each chain whose two sides are one face each, the exact contact of the
 ball on those faces is traced (contact.py), sampled uniformly in the arc length of the
 ball's centre curve, and turned into G2 cross-boundary data; the PDE blend of those
-data is fitted as a B-spline face. The faces of the original solid that the blend
-touches (its two sides, and the planar faces at its ends) are cut anew along the
-blend's boundary curves, and everything is sewn into a solid and checked (BRepCheck,
+data is fitted as a B-spline face. An open chain that does not end on a plane across it
+(a slanted or curved end face, or another fillet met at an angle: a mitre) is traced
+past its ends and cut back by what lies there (ends.py). The faces of the original
+solid that the blend touches (its two sides and its end faces) are cut anew along the
+blend's boundary edges, and everything is sewn into a solid and checked (BRepCheck,
 and continuity along every trimline). Kept as OCCT made them, and reported as such with
-the reason (no G2 claim is made there): corner patches where fillets meet at a vertex,
-chains whose side changes face, ends on non-planar faces, and chains whose exact
-contact or blend cannot be built (NotReplaced).
+the reason (no G2 claim is made there): corner patches where three fillets meet at a
+vertex, chains whose side changes face, and chains whose exact contact, blend or cut
+cannot be built (NotReplaced, ends.trim), with the fillets that meet them in a mitre.
 """
 import math
 import time
@@ -24,6 +26,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
+from . import ends
 from .rollingball import RollingBallFace, chains, interior_points, new_faces
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
@@ -95,24 +98,38 @@ def sample_rows(chain, contact, n, nrows, tension, where):
 
 
 class Blended:
-    """A rolling-ball chain replaced by a PDE blend: surface, face, fit and data facts;
-    end_curves: (end edge, end face, v) per end of the chain (see _end_curves)."""
+    """A rolling-ball chain replaced by a PDE blend: surface, fit and data facts; ends:
+    its ends (ends.ChainEnd); full_face: the whole surface; face: the part of it in the
+    solid (full_face cut back at trimmed ends, see ends.trim); probe: a point inside
+    face."""
 
-    def __init__(self, chain, where, surface, fit, samples, data_rel):
-        self.chain, self.where, self.surface, self.fit = chain, where, surface, fit
+    def __init__(self, chain, ends, where, surface, fit, samples, data_rel):
+        self.chain, self.ends, self.where, self.surface, self.fit = chain, ends, where, surface, fit
         self.samples, self.data_rel = samples, data_rel
-        self.face = Part.Face(surface)
-        self.v_range = surface.bounds()[2:4]
-        self.end_curves = _end_curves(self)
+        self.full_face = self.face = Part.Face(surface)
+        self.surface_diag = self.full_face.BoundBox.DiagonalLength
+        sec = chain.sections[len(chain.sections) // 2]
+        mid = sec.rbf.point(0.5 * (sec.a_start + sec.a_end), sec.cm)
+        u0, u1, v0, v1 = surface.bounds()
+        self.probe = surface.value(0.5 * (u0 + u1), surface.parameter(mid)[1])
 
 
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
-               max_samples):
+               max_samples, fillet_faces, original):
     """The PDE blend replacing one rolling-ball chain (see bspline.solve_sampled), from
-    the exact contact of the ball of `radius`. Raises NotReplaced saying why it cannot."""
+    the exact contact of the ball of `radius`, traced past the ends that are trimmed
+    (ends.py). original(result face) is the face of the original solid it lies on.
+    Raises NotReplaced saying why it cannot."""
     nrows = ROWS[continuity]
+    at_ends = ends.chain_ends(chain, fillet_faces)
+    for end_edge, face in chain.ends:
+        if not any(face.isSame(f) for f in fillet_faces) and not _on_face(
+                original(face), _midpoint(end_edge), 10.0 * max(end_edge.Tolerance, 1e-7)):
+            raise NotReplaced("OCCT's fillet ends on a part of its end face that is not on "
+                              "the original solid's face (OCCT extends that face); the blend "
+                              "cannot be joined to the original face there")
     try:
-        contact = Contact(chain, radius)
+        contact = Contact(chain, radius, ends.extension(at_ends, radius))
         blend, n, err = solve_sampled(
             lambda k: sample_rows(chain, contact, k, nrows, tension, where),
             lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
@@ -125,12 +142,15 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                           "to %.1e (relative) with %d samples, too rough for an exact G2 "
                           "blend" % (err, n))
     surface, fit = fit_surface(blend, tol_rel, where)
-    b = Blended(chain, where, surface, fit, n, err)
-    for _, face, v in b.end_curves:
-        gap = max(_off_surface(face.Surface, surface.value(u / 8.0, v)) for u in range(9))
-        if gap > ON_FACE * fit["tolerance"]:
-            raise NotReplaced("the blend's end section leaves the end face by %.1e (the end "
-                              "face is not across the fillet)" % gap)
+    b = Blended(chain, at_ends, where, surface, fit, n, err)
+    v_ends = surface.bounds()[2:4]
+    for end in at_ends:
+        if end.across:
+            gap = max(_off_surface(end.faces[0].Surface, surface.value(u / 8.0, v_ends[end.at]))
+                      for u in range(9))
+            if gap > ON_FACE * fit["tolerance"]:
+                raise NotReplaced("the blend's end section leaves the end face by %.1e"
+                                  % gap)
     return b
 
 
@@ -139,12 +159,8 @@ def _off_surface(surface, p):
     return (surface.value(*surface.parameter(p)) - p).Length
 
 
-def _end_curves(b):
-    """(end edge, end face, v) per end of the blend's chain: v is the end of the blend's
-    v-range nearest to the end edge (none for a closed chain)."""
-    ends = {v: Part.Vertex(b.surface.value(0.5, v)) for v in b.v_range}
-    return [(e, face, min(ends, key=lambda v: e.distToShape(ends[v])[0]))
-            for e, face in b.chain.ends]
+def _midpoint(edge):
+    return edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
 
 
 def _on_face(face, p, tol):
@@ -155,6 +171,22 @@ def _on_face(face, p, tol):
 def _probe(face):
     """A point inside face."""
     return (interior_points(face, 3) or [face.CenterOfMass])[0]
+
+
+def _original(shape, face):
+    """The face of the original solid `shape` that a face of OCCT's result lies on."""
+    probe = Part.Vertex(_probe(face))
+    return min(shape.Faces, key=lambda g: g.distToShape(probe)[0])
+
+
+def _face_under(edge, faces, tol):
+    """The first of `faces` whose surface holds the edge (at 3 inner points, within tol
+    or 10x the edge's tolerance), or None."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    pts = [edge.valueAt(a + x * (b - a)) for x in (0.25, 0.5, 0.75)]
+    tol = max(tol, 10.0 * edge.Tolerance)
+    return next((f for f in faces if all(_off_surface(f.Surface, p) <= tol for p in pts)),
+                None)
 
 
 def _edge_on_face(edge, face, tol):
@@ -202,20 +234,21 @@ def assemble(shape, result, blended, fillet_faces, where):
     drop = [f for b in blended for f in b.chain.faces]
     kept_fillets = [f for f in fillet_faces if not any(f.isSame(d) for d in drop)]
     faces_out = [b.face for b in blended]
-    # the original faces the blends touch, with the blend curves lying on each
+    # the original faces the blends touch, with the blend's edges lying on each
     touched = []  # [(original face, [tool edges])]
     for b in blended:
-        curves = [(b.chain.sides[0], b.surface.uIso(0.0)),
-                  (b.chain.sides[1], b.surface.uIso(1.0))]
-        curves += [(face, b.surface.vIso(v)) for _, face, v in b.end_curves]
-        for res_face, curve in curves:
-            probe = Part.Vertex(_probe(res_face))
-            orig = min(shape.Faces, key=lambda g: g.distToShape(probe)[0])
+        near = list(b.chain.sides) + [f for e in b.ends for f in e.faces
+                                      if not any(f.isSame(g) for g in e.fillets)]
+        for edge in b.face.Edges:
+            res_face = _face_under(edge, near, ON_FACE * b.fit["tolerance"])
+            if res_face is None:
+                continue  # a mitre, shared with another blend
+            orig = _original(shape, res_face)
             entry = next((t for t in touched if t[0].isSame(orig)), None)
             if entry is None:
                 entry = (orig, [])
                 touched.append(entry)
-            entry[1].append(Part.Edge(curve))
+            entry[1].append(edge)
     boundary = Part.Compound(result.Faces)
     sharp = [e for e in shape.Edges  # the edges the fillets consumed
              if not any(e.isSame(r) for r in result.Edges) and boundary.distToShape(
@@ -250,7 +283,7 @@ def assemble(shape, result, blended, fillet_faces, where):
     solid = Part.Solid(shells[0])
     if solid.Volume < 0:
         solid.reverse()
-    _update_tolerances(solid, [_find_face(solid, b.surface) for b in blended])
+    _update_tolerances(solid, [_find_face(solid, b) for b in blended])
     try:
         solid.check(True)  # BRepCheck_Analyzer, as isValid(), but says what is wrong
     except Exception as ex:
@@ -259,11 +292,15 @@ def assemble(shape, result, blended, fillet_faces, where):
     return solid
 
 
-def _where(label, names, chain):
-    """Names of the selected edges nearest to a rolling-ball chain, for messages."""
-    d = [(min(f.distToShape(e)[0] for f in chain.faces), n) for n, e in names]
-    best = min(x for x, _ in d)
-    return ", ".join("%s.%s" % (label, n) for x, n in d if x <= best + 1e-9 * (1 + best))
+def _where(label, names, chains_):
+    """{id(chain): names of the selected edges it fillets}, for messages: each edge goes
+    to the chain whose faces are nearest to the edge's midpoint."""
+    out = {}
+    for n, e in names:
+        mid = Part.Vertex(_midpoint(e))
+        c = min(chains_, key=lambda c: min(f.distToShape(mid)[0] for f in c.faces))
+        out.setdefault(id(c), []).append("%s.%s" % (label, n))
+    return {k: ", ".join(v) for k, v in out.items()}
 
 
 def _trimline_checks(solid, blended):
@@ -273,9 +310,9 @@ def _trimline_checks(solid, blended):
     out = []
     diag = solid.BoundBox.DiagonalLength
     for b in blended:
-        face = _find_face(solid, b.surface)
+        face = _find_face(solid, b)
         for side in (0.0, 1.0):
-            pts = ck.trimline_points(b.surface, side)
+            pts = ck.trimline_points(b.surface, side, v_range=ends.side_range(b, side))
             probe = Part.Vertex(pts[len(pts) // 2][0])
             nbrs = [f for e in face.Edges for f in ck.edge_faces(solid, e)
                     if not f.isSame(face) and e.distToShape(probe)[0] < 1e-6 * diag]
@@ -296,10 +333,9 @@ def _edge_near(face, vertex):
     return min(face.Edges, key=lambda e: e.distToShape(vertex)[0])
 
 
-def _find_face(solid, surface):
-    """The face of solid lying on surface (sewing keeps the surface, not the face)."""
-    u0, u1, v0, v1 = surface.bounds()
-    p = Part.Vertex(surface.value(0.5 * (u0 + u1), 0.5 * (v0 + v1)))
+def _find_face(solid, b):
+    """The face of solid made from blend b (sewing keeps the surface, not the face)."""
+    p = Part.Vertex(b.probe)
     return min(solid.Faces, key=lambda f: f.distToShape(p)[0])
 
 
@@ -335,16 +371,26 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     t_occt = time.perf_counter() - t0
     fillet_faces = new_faces(shape, result)
     blended, kept = [], []
-    for chain in chains([RollingBallFace(result, f, fillet_faces) for f in fillet_faces]):
-        where = _where(label, names, chain)
+    all_chains = chains([RollingBallFace(result, f, fillet_faces) for f in fillet_faces])
+    wheres = _where(label, names, all_chains)
+    for chain in all_chains:
+        where = wheres.get(id(chain), "%s (a corner patch)" % where_all)
         if chain.corner:
             kept.append({"where": where, "reason": chain.corner})
             continue
         try:
             blended.append(solve_face(chain, radius, where, continuity, shape_params, tension,
-                                      tol_rel, samples, max_samples))
+                                      tol_rel, samples, max_samples, fillet_faces,
+                                      lambda f: _original(shape, f)))
         except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
+    while True:  # cut blends back at trimmed ends; a blend that cannot be cut is kept
+        failed = ends.trim(blended, lambda f: _original(shape, f))
+        if not failed:
+            break
+        for b, reason in failed:
+            kept.append({"where": b.where, "reason": reason})
+        blended = [b for b in blended if not any(b is x for x, _ in failed)]
     t_solve = time.perf_counter()
     solid = assemble(shape, result, blended, fillet_faces, where_all) if blended else (
         result.Solids[0] if len(result.Solids) == 1 else result)

@@ -62,7 +62,8 @@ class RollingBallFace:
     """One rolling-ball face and its surroundings.
 
     Attributes: face; contacts: [(edge, neighbour face), (edge, neighbour face)];
-    ends: [(edge, neighbour face)] (empty for a closed fillet);
+    ends: [(edge, neighbour face)] (empty for a closed fillet): faces met at an angle,
+    end faces of the solid or other fillets (mitres);
     links: [(edge, fillet face)], tangent joins to other rolling-ball faces of a chain;
     corner: None, or a string saying why the face cannot be replaced (corner patch).
     along: 0 or 1, the surface parameter along the fillet; range: its range on the face;
@@ -83,11 +84,9 @@ class RollingBallFace:
             is_fillet = any(nb.isSame(g) for g in fillet_faces)
             if is_fillet and tangent:
                 self.links.append((e, nb))
-            elif is_fillet:
-                self.corner = "it meets another fillet or corner patch of OCCT at an angle"
             elif tangent:
                 self.contacts.append((e, nb))
-            else:
+            else:  # an end face, or another fillet met at an angle (a mitre)
                 self.ends.append((e, nb))
         if self.corner is None and len(self.contacts) != 2:
             self.corner = ("it has %d tangent contact edges instead of 2 (a corner patch)"
@@ -95,10 +94,6 @@ class RollingBallFace:
         if self.corner is None:
             self.corner = next(("it meets another fillet along a contact edge (a corner patch)"
                                 for e, _ in self.links if any(e.isSame(c) for c, _ in self.contacts)), None)
-        if self.corner is None:
-            for e, nb in self.ends:
-                if not nb.Surface.isPlanar():
-                    self.corner = "an end of the fillet lies on a non-planar face"
         if self.corner is None:
             self._orient()
 
@@ -136,7 +131,7 @@ class RollingBallFace:
         return a if a in self.range else None
 
 
-class _Section:
+class Section:
     """One member of a chain, run from along-parameter a_start to a_end, with the
     across-parameters of side 1 and side 2 (cm: their mean, the mid-line)."""
 
@@ -194,7 +189,7 @@ class FilletChain:
         self.sections, m, a = [], start, a_in
         while True:
             a_out = m.range[1] if a == m.range[0] else m.range[0]
-            self.sections.append(_Section(m, a, a_out, *cs[id(m)]))
+            self.sections.append(Section(m, a, a_out, *cs[id(m)]))
             nxt = ends.get((id(m), a_out))
             if nxt is None or (nxt[0] is start and nxt[1] == a_in):
                 break

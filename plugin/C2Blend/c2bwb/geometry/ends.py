@@ -1,0 +1,240 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""How an open blend ends (fillet.py).
+
+Each end of an open fillet chain is one of:
+- exact: a single planar face across the fillet (its normal along the guide's tangent
+  there). The ball's section at the end lies in that plane, and so does the blend's end
+  section (its first or last v): the blend stops there as computed.
+- trimmed: anything else. A slanted or curved end face, or another fillet met at an
+  angle (a mitre, as where two fillets on a box's top edges meet above a sharp vertical
+  edge). The contact is traced EXTEND radii past OCCT's end, on the faces' underlying
+  surfaces (contact.py), and the blend is cut back by what lies there: the end face's
+  surface, or the other fillet's blend, itself extended. One general fuse cuts all such
+  blends together, so two blends meeting at a mitre share the edge they are cut along.
+"""
+import numpy as np
+import Part
+
+from .surface import angle, frame_at_point
+
+EXTEND = 1.0  # radii traced past a trimmed end
+ACROSS = 1e-9  # rad: an exact end plane's normal is this close to the guide's tangent
+ON_TRIMLINE = 1e-7  # |u - side| of a blend edge's ends on a trimline (u in [0, 1])
+CUT_NODES = 128  # intervals in u of a cut curve's interpolation
+CUT_TOL = 1e-8  # a cut curve lies on both surfaces within this, relative to the blend
+MAX_NEWTON = 30
+NEWTON_DONE = 1e-14  # relative residual or step at which a cut point is converged
+
+
+class ChainEnd:
+    """One end of an open chain: at 0 (the start of its sections, the blend's first v) or
+    1 (the end, last v); faces: OCCT's faces met there; fillets: those of them that are
+    rolling-ball faces (mitres); across: True when the end is exact (see the module)."""
+
+    def __init__(self, at):
+        self.at, self.faces, self.fillets, self.across = at, [], [], False
+
+
+def _guide(chain, at):
+    """Point and along-tangent of the guide's mid-line at the start (0) or end (1)."""
+    sec = chain.sections[0] if at == 0 else chain.sections[-1]
+    a = sec.a_start if at == 0 else sec.a_end
+    return sec.rbf.point(a, sec.cm), sec.rbf.derivative(a, sec.cm, True)
+
+
+def chain_ends(chain, fillet_faces):
+    """[ChainEnd at the start, ChainEnd at the end] of an open chain, [] if closed."""
+    if chain.closed:
+        return []
+    out = [ChainEnd(0), ChainEnd(1)]
+    guide = [_guide(chain, at) for at in (0, 1)]
+    for edge, nb in chain.ends:
+        d = [edge.distToShape(Part.Vertex(m))[0] for m, _ in guide]
+        end = out[0 if d[0] <= d[1] else 1]
+        if not any(nb.isSame(f) for f in end.faces):
+            end.faces.append(nb)
+            if any(nb.isSame(f) for f in fillet_faces):
+                end.fillets.append(nb)
+    for end in out:
+        m, t = guide[end.at]
+        if len(end.faces) == 1 and not end.fillets and end.faces[0].Surface.isPlanar():
+            n = frame_at_point(end.faces[0], m).n
+            end.across = min(angle(n, t), angle(n, -t)) <= ACROSS
+    return out
+
+
+def extension(ends, radius):
+    """(start, end): the lengths to trace the contact past each end."""
+    out = [0.0, 0.0]
+    for end in ends:
+        if not end.across:
+            out[end.at] = EXTEND * radius
+    return tuple(out)
+
+
+def _tool(face):
+    """A face on the surface of `face`, three times its parameter spans where the
+    surface allows (one period at most, within a bounded surface's bounds), so that a
+    blend extended past it is cut across its whole width."""
+    s = face.Surface
+    r, bounds = face.ParameterRange, s.bounds()
+    periods = (s.UPeriod() if s.isUPeriodic() else None,
+               s.VPeriod() if s.isVPeriodic() else None)
+    box = []
+    for k in (0, 1):
+        lo, hi = r[2 * k], r[2 * k + 1]
+        lo, hi = lo - (hi - lo), hi + (hi - lo)
+        if periods[k] is not None:
+            mid, half = 0.5 * (lo + hi), 0.5 * min(hi - lo, periods[k])
+            lo, hi = mid - half, mid + half
+        else:
+            lo, hi = max(lo, bounds[2 * k]), min(hi, bounds[2 * k + 1])
+        box += [lo, hi]
+    return s.toShape(*box)
+
+
+def _newton(f, x, scale, what):
+    """Newton (least squares when overdetermined) on f(x) -> (residual Vector, [column
+    Vectors]) from x, until the residual is rounding (NEWTON_DONE x scale) or the step
+    is (near a tangency the Jacobian is nearly singular, so the parameters jitter by
+    more than the residual). Returns x. Raises ValueError naming `what`."""
+    for _ in range(MAX_NEWTON):
+        d, cols = f(x)
+        if d.Length <= NEWTON_DONE * scale:
+            return x
+        jac = np.array([[c.x for c in cols], [c.y for c in cols], [c.z for c in cols]])
+        dx = np.linalg.lstsq(jac, [-d.x, -d.y, -d.z], rcond=None)[0]
+        x = [a + b for a, b in zip(x, dx)]
+        if max(abs(q) for q in dx) <= NEWTON_DONE * (1.0 + max(abs(q) for q in x)):
+            return x
+    raise ValueError("Newton's method for %s did not converge" % what)
+
+
+def cut_edge(surface, tool_face, touch=None):
+    """The curve where a blend `surface` (u across, v along) crosses the surface T of
+    `tool_face`,
+    as an edge: at CUT_NODES + 1 values of u, Newton's method on S(u, v) = T(s, t) for
+    (v, s, t), marching across from a start given by OCCT's section of the two; the
+    points are interpolated by a C2 B-spline in u. touch: None, or (u side, tool's u
+    side) where the two surfaces are tangent (a mitre's end on the face both blends
+    touch); that end is where the two trimlines cross (Newton on S(u side, v) =
+    T(tool side, t)). Returns (edge, largest distance of the curve from either surface
+    between the nodes). Raises ValueError saying why it cannot."""
+    tool, face = tool_face.Surface, Part.Face(surface)
+    scale = face.BoundBox.DiagonalLength
+    sec = face.section(tool_face)
+    if not sec.Edges:
+        raise ValueError("the surfaces do not cross")
+    guesses = [surface.parameter(p) for e in sec.Edges for p in e.discretize(Number=16)]
+    start = 0.0 if touch is not None and touch[0] == 1.0 else 1.0
+    us = [start + (1.0 - 2.0 * start) * k / CUT_NODES for k in range(CUT_NODES + 1)]
+    g = min(guesses, key=lambda q: abs(q[0] - start))
+    x = [g[1]] + list(tool.parameter(surface.value(start, g[1])))
+    sol = []
+    for u in us:
+        if touch is not None and u == touch[0]:
+            side = touch[1]
+            x = _newton(lambda y: (surface.value(u, y[0]) - tool.value(side, y[1]),
+                                   (surface.getDN(u, y[0], 0, 1), -tool.getDN(side, y[1], 0, 1))),
+                        [x[0], x[2]], scale, "the trimlines' crossing")
+            sol.append((u, x[0]))
+            break
+        x = _newton(lambda y: (surface.value(u, y[0]) - tool.value(y[1], y[2]),
+                               (surface.getDN(u, y[0], 0, 1), -tool.getDN(y[1], y[2], 1, 0),
+                                -tool.getDN(y[1], y[2], 0, 1))), x, scale, "the cut curve")
+        sol.append((u, x[0]))
+    sol.sort()
+    curve = Part.BSplineCurve()
+    curve.interpolate(Points=[surface.value(u, v) for u, v in sol],
+                      Parameters=[u for u, _ in sol])
+    off = 0.0
+    for (u0, _), (u1, _) in zip(sol, sol[1:]):
+        p = curve.value(0.5 * (u0 + u1))
+        off = max(off, (surface.value(*surface.parameter(p)) - p).Length,
+                  (tool.value(*tool.parameter(p)) - p).Length)
+    return curve.toShape(), off
+
+
+def _touch(b, partner):
+    """(u side of b, u side of partner) on the face both blends touch at a mitre, or
+    None when they share no face."""
+    for i, f in enumerate(b.chain.sides):
+        for j, g in enumerate(partner.chain.sides):
+            if f.isSame(g):
+                return float(i), float(j)
+    return None
+
+
+def trim(blends, original_face):
+    """Cut every blend with a trimmed end back: each extended face (b.full_face) is cut
+    along its section with the tools of its trimmed ends (the end faces' surfaces, via
+    original_face(result face) -> face of the original solid; a mitre partner's
+    extended face, whose section is computed once and shared). Sets b.face to the piece
+    holding b.probe. Returns [(blend, reason)] for blends that cannot be cut, or whose
+    extension survives; blends whose mitre partner is not among `blends` are returned
+    too."""
+    todo = [b for b in blends if any(not e.across for e in b.ends)]
+    failed = []
+    for b in todo:
+        for e in b.ends:
+            for f in e.fillets:
+                if not any(f.isSame(g) for o in blends for g in o.chain.faces):
+                    failed.append((b, "it meets another fillet at an angle, and that fillet "
+                                   "is kept as OCCT made it"))
+    if failed:
+        return failed
+    cuts = {id(b): [] for b in todo}
+    for i, b in enumerate(todo):
+        tol = CUT_TOL * b.surface_diag
+        for e in b.ends:
+            if e.across:
+                continue
+            for f in e.faces:
+                k = next((k for k, o in enumerate(todo)
+                          if any(f.isSame(g) for g in o.chain.faces)), None)
+                if k is not None and k < i:
+                    continue  # a mitre's edge is made once, by the first of its blends
+                partner = None if k is None else todo[k]
+                try:
+                    if partner is None:
+                        edge, off = cut_edge(b.surface, _tool(original_face(f)))
+                    else:
+                        edge, off = cut_edge(b.surface, partner.full_face, _touch(b, partner))
+                    if off > tol:
+                        raise ValueError("its cut curve is %.1e off the surfaces" % off)
+                except ValueError as ex:
+                    failed.append((b, "its blend, traced %g radii past OCCT's end, cannot "
+                                   "be cut back to the %s there: %s"
+                                   % (EXTEND, "fillet" if partner else "end face", ex)))
+                    continue
+                edge.fixTolerance(max(2.0 * off, 1e-7 * b.surface_diag))
+                cuts[id(b)].append(edge)
+                if partner is not None:
+                    cuts[id(partner)].append(edge)
+    for b in todo:
+        if any(b is x for x, _ in failed):
+            continue
+        pieces = b.full_face.generalFuse(cuts[id(b)])[0].Faces
+        tol = CUT_TOL * b.surface_diag
+        keep = [p for p in pieces if p.distToShape(Part.Vertex(b.probe))[0] <= tol]
+        v0, v1 = b.surface.bounds()[2:4]
+        if len(keep) != 1 or any(
+                keep[0].distToShape(Part.Vertex(b.surface.value(0.5, v1 if e.at else v0)))[0]
+                <= tol for e in b.ends if not e.across):
+            failed.append((b, "its blend, traced %g radii past OCCT's end, is not cut off "
+                           "by the face or fillet there" % EXTEND))
+        else:
+            b.face = keep[0]
+    return failed
+
+
+def side_range(b, side):
+    """(v0, v1): the v-range of the blend's face along its trimline u = side."""
+    if b.face is b.full_face:
+        return tuple(b.surface.bounds()[2:4])
+    vs = []
+    for e in b.face.Edges:
+        uv = [b.surface.parameter(v.Point) for v in e.Vertexes]
+        if all(abs(u - side) <= ON_TRIMLINE for u, _ in uv):
+            vs += [v for _, v in uv]
+    return (min(vs), max(vs)) if vs else tuple(b.surface.bounds()[2:4])
