@@ -289,6 +289,11 @@ def test_mitres_on_box_top_edges():
         assert (ends[1] - V(abs(cx - 2), abs(cy - 2), 10)).Length < 1e-6
         for p in edge_points(e):
             assert abs(abs(p.x - cx) - abs(p.y - cy)) < 1e-6, p
+    # the mitres are creases: the normals differ by 90 degrees where they meet the
+    # vertical edge, 0 where they meet the top
+    assert len(rep["mitres"]) == 4
+    for r in rep["mitres"]:
+        assert r["verdict"] == "G0" and 1.0 < r["g1"] < math.pi / 2 + 1e-6
     (top_face,) = [f for f in solid.Faces if f.Surface.isPlanar()
                    and abs(f.BoundBox.ZMin - 10) < 1e-9 and abs(f.BoundBox.ZMax - 10) < 1e-9]
     assert top_face.Area == pytest.approx(36.0, abs=1e-6)

@@ -146,6 +146,10 @@ def format_report(rep):
         lines.append("%s (%s): %s  G0 %.2e  G1 %.2e rad  curvature jump %.3g (rel %.2e)"
                      % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g0"], r["g1"],
                         r["g2"], r["g2_rel"]))
+    for r in rep.get("mitres", []):
+        lines.append("%s (%s): mitre where two fillets meet at an angle, a crease as in OCCT "
+                     "(not a trimline, not in the verdict): %s, normals %.3g rad apart"
+                     % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"]))
     for k in rep.get("kept_occt_faces", []):
         lines.append("%s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
                      % (k["where"], k["reason"]))

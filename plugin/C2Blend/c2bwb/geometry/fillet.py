@@ -329,6 +329,25 @@ def _trimline_checks(solid, blended):
     return out
 
 
+def _mitre_checks(solid, blended):
+    """Continuity across the edges where two blends meet at an angle (mitres): creases
+    by construction, as where OCCT's fillets meet there; reported, not counted in the
+    verdict, which is about the trimlines."""
+    faces = [(b, _find_face(solid, b)) for b in blended]
+    out = []
+    for i, (b, f) in enumerate(faces):
+        for o, g in faces[i + 1:]:
+            for e in f.Edges:
+                if any(e.isSame(x) for x in g.Edges):
+                    r = ck.check_edge(solid, e)
+                    r["edge"] = ck.element_name(solid, e, "Edge")
+                    r["faces"] = [ck.element_name(solid, f, "Face"),
+                                  ck.element_name(solid, g, "Face")]
+                    r["blends"] = [b.where, o.where]
+                    out.append(r)
+    return out
+
+
 def _edge_near(face, vertex):
     return min(face.Edges, key=lambda e: e.distToShape(vertex)[0])
 
@@ -405,6 +424,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                     "closed": b.chain.closed} for b in blended],
         "kept_occt_faces": kept,
         "trimlines": checks,
+        "mitres": _mitre_checks(solid, blended),
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
         "stage_seconds": {"occt_fillet": t_occt, "trimlines_solve_fit": t_solve - t0 - t_occt,
