@@ -263,6 +263,32 @@ def test_end_face_extended_by_occt_is_kept():
     assert rep["kept_occt_faces"][0]["where"] == "Boss." + edge
 
 
+def test_uncut_mitre_keeps_both_fillets(monkeypatch):
+    """When a blend's extension cannot be cut back (here: an injected failure of the
+    cut curve for the box's front top edge), OCCT's face is kept for it, and so is the
+    face of every fillet that meets it in a mitre, down the chain: all four top edges
+    here. The solid is still valid and the verdict G1, never G2."""
+    from c2bwb.geometry import ends
+    real = ends.cut_edge
+
+    def failing(surface, tool_face, touch=None):
+        if surface.value(0.5, sum(surface.bounds()[2:4]) / 2).y < 1.0:  # the y = 0 edge
+            raise ValueError("injected")
+        return real(surface, tool_face, touch)
+
+    monkeypatch.setattr(ends, "cut_edge", failing)
+    box = shapes.box()
+    top = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
+           if abs(e.BoundBox.ZMin - 10) < 1e-9 and abs(e.BoundBox.ZMax - 10) < 1e-9]
+    solid, rep = C2Blend.fillet_report(box, top, 2.0, label="Box")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    reasons = [k["reason"] for k in rep["kept_occt_faces"]]
+    assert len(reasons) == 4
+    assert any("injected" in r for r in reasons)
+    assert any("kept as OCCT made it" in r for r in reasons)
+
+
 def test_mitres_on_box_top_edges():
     """The four top edges of a 10 mm box at R = 2: the fillets meet at the corners above
     the sharp vertical edges (mitres). Each blend is traced past its ends and cut by its

@@ -112,10 +112,9 @@ def _newton(f, x, scale, what):
 
 def cut_edge(surface, tool_face, touch=None):
     """The curve where a blend `surface` (u across, v along) crosses the surface T of
-    `tool_face`,
-    as an edge: at CUT_NODES + 1 values of u, Newton's method on S(u, v) = T(s, t) for
-    (v, s, t), marching across from a start given by OCCT's section of the two; the
-    points are interpolated by a C2 B-spline in u. touch: None, or (u side, tool's u
+    `tool_face`, as an edge: at CUT_NODES + 1 values of u, Newton's method on
+    S(u, v) = T(s, t) for (v, s, t), marching across from a start given by OCCT's
+    section of the two; the points are interpolated by a C2 B-spline in u. touch: None, or (u side, tool's u
     side) where the two surfaces are tangent (a mitre's end on the face both blends
     touch); that end is where the two trimlines cross (Newton on S(u side, v) =
     T(tool side, t)). Returns (edge, largest distance of the curve from either surface
@@ -214,7 +213,12 @@ def trim(blends, original_face):
     for b in todo:
         if any(b is x for x, _ in failed):
             continue
-        pieces = b.full_face.generalFuse(cuts[id(b)])[0].Faces
+        try:
+            pieces = b.full_face.generalFuse(cuts[id(b)])[0].Faces
+        except Exception as ex:  # OCCT's general fuse failed on this blend
+            failed.append((b, "cutting its blend along the curves at its ends failed (%s)"
+                           % (str(ex) or type(ex).__name__)))
+            continue
         tol = CUT_TOL * b.surface_diag
         keep = [p for p in pieces if p.distToShape(Part.Vertex(b.probe))[0] <= tol]
         v0, v1 = b.surface.bounds()[2:4]
