@@ -8,7 +8,6 @@
 #include "c2b_navier.h"
 
 struct c2b_surface {
-    c2b_solver_kind kind;
     c2b_blend *blend;
     c2b_approx *approx;
     c2b_navier *navier;
@@ -36,7 +35,6 @@ c2b_status c2b_surface_create(c2b_spec *s, double t, c2b_surface **out, c2b_erro
     c2b_problem pb = *c2b_spec_problem(s);
     pb.time = t;
     c2b_spec_solver so = c2b_spec_solver_settings(s);
-    sf->kind = so.kind;
     c2b_status st = C2B_OK;
     if (so.kind == C2B_SOLVER_EXACT) {
         st = c2b_blend_create(&pb, &sf->blend, err);

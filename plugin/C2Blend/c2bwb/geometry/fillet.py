@@ -28,6 +28,7 @@ from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
 from . import ends
 from .rollingball import RollingBallFace, chains, interior_points, new_faces
+from .surface import off_surface
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -146,17 +147,12 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     v_ends = surface.bounds()[2:4]
     for end in at_ends:
         if end.across:
-            gap = max(_off_surface(end.faces[0].Surface, surface.value(u / 8.0, v_ends[end.at]))
+            gap = max(off_surface(end.faces[0].Surface, surface.value(u / 8.0, v_ends[end.at]))
                       for u in range(9))
             if gap > ON_FACE * fit["tolerance"]:
                 raise NotReplaced("the blend's end section leaves the end face by %.1e"
                                   % gap)
     return b
-
-
-def _off_surface(surface, p):
-    """Distance from point p to its projection onto surface."""
-    return (surface.value(*surface.parameter(p)) - p).Length
 
 
 def _midpoint(edge):
@@ -179,20 +175,24 @@ def _original(shape, face):
     return min(shape.Faces, key=lambda g: g.distToShape(probe)[0])
 
 
-def _face_under(edge, faces, tol):
-    """The first of `faces` whose surface holds the edge (at 3 inner points, within tol
-    or 10x the edge's tolerance), or None."""
+def _inner_points(edge):
+    """Points of edge at a quarter, half and three quarters of its parameter range."""
     a, b = edge.FirstParameter, edge.LastParameter
-    pts = [edge.valueAt(a + x * (b - a)) for x in (0.25, 0.5, 0.75)]
+    return [edge.valueAt(a + x * (b - a)) for x in (0.25, 0.5, 0.75)]
+
+
+def _face_under(edge, faces, tol):
+    """The first of `faces` whose surface holds the edge (at its inner points, within tol
+    or 10x the edge's tolerance), or None."""
+    pts = _inner_points(edge)
     tol = max(tol, 10.0 * edge.Tolerance)
-    return next((f for f in faces if all(_off_surface(f.Surface, p) <= tol for p in pts)),
+    return next((f for f in faces if all(off_surface(f.Surface, p) <= tol for p in pts)),
                 None)
 
 
 def _edge_on_face(edge, face, tol):
-    """True when edge lies on face (at 3 inner points, within tol)."""
-    a, b = edge.FirstParameter, edge.LastParameter
-    return all(_on_face(face, edge.valueAt(a + x * (b - a)), tol) for x in (0.25, 0.5, 0.75))
+    """True when edge lies on face (at its inner points, within tol)."""
+    return all(_on_face(face, p, tol) for p in _inner_points(edge))
 
 
 def _cut_face(face, tools, sharp, tol):
@@ -252,7 +252,7 @@ def assemble(shape, result, blended, fillet_faces, where):
     boundary = Part.Compound(result.Faces)
     sharp = [e for e in shape.Edges  # the edges the fillets consumed
              if not any(e.isSame(r) for r in result.Edges) and boundary.distToShape(
-                 Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))))[0] > tol]
+                 Part.Vertex(_midpoint(e)))[0] > tol]
     for orig, tools in touched:
         # edges of OCCT fillets kept on this face bound it too
         tools += [e for k in kept_fillets for e in k.Edges if _edge_on_face(e, orig, tol)]
@@ -303,14 +303,13 @@ def _where(label, names, chains_):
     return {k: ", ".join(v) for k, v in out.items()}
 
 
-def _trimline_checks(solid, blended):
+def _trimline_checks(solid, faces):
     """Continuity of the solid across both trimlines of each blend face, at 101 points
     per trimline, evaluated on the blend at known parameters and projected onto the
-    neighbouring face of the solid."""
+    neighbouring face of the solid. faces: [(Blended, its face in solid)]."""
     out = []
     diag = solid.BoundBox.DiagonalLength
-    for b in blended:
-        face = _find_face(solid, b)
+    for b, face in faces:
         for side in (0.0, 1.0):
             pts = ck.trimline_points(b.surface, side, v_range=ends.side_range(b, side))
             probe = Part.Vertex(pts[len(pts) // 2][0])
@@ -329,11 +328,10 @@ def _trimline_checks(solid, blended):
     return out
 
 
-def _mitre_checks(solid, blended):
+def _mitre_checks(solid, faces):
     """Continuity across the edges where two blends meet at an angle (mitres): creases
     by construction, as where OCCT's fillets meet there; reported, not counted in the
-    verdict, which is about the trimlines."""
-    faces = [(b, _find_face(solid, b)) for b in blended]
+    verdict, which is about the trimlines. faces: [(Blended, its face in solid)]."""
     out = []
     for i, (b, f) in enumerate(faces):
         for o, g in faces[i + 1:]:
@@ -414,7 +412,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     solid = assemble(shape, result, blended, fillet_faces, where_all) if blended else (
         result.Solids[0] if len(result.Solids) == 1 else result)
     t_assemble = time.perf_counter()
-    checks = _trimline_checks(solid, blended)
+    faces = [(b, _find_face(solid, b)) for b in blended]
+    checks = _trimline_checks(solid, faces)
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,
@@ -424,7 +423,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                     "closed": b.chain.closed} for b in blended],
         "kept_occt_faces": kept,
         "trimlines": checks,
-        "mitres": _mitre_checks(solid, blended),
+        "mitres": _mitre_checks(solid, faces),
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
         "stage_seconds": {"occt_fillet": t_occt, "trimlines_solve_fit": t_solve - t0 - t_occt,

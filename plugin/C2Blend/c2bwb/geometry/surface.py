@@ -94,6 +94,11 @@ def frame_at_point(face, p):
     return Frame(face, u, v)
 
 
+def off_surface(surface, p):
+    """Distance from point p to its orthogonal projection onto surface."""
+    return (surface.value(*surface.parameter(p)) - p).Length
+
+
 def frame_or_none(face, u, v):
     """Frame of face at (u, v), or None where the surface is degenerate (a pole)."""
     try:
