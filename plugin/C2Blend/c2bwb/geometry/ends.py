@@ -15,7 +15,7 @@ Each end of an open fillet chain is one of:
 import numpy as np
 import Part
 
-from .surface import angle, frame_at_point
+from .surface import angle, frame_at_point, off_surface
 
 EXTEND = 1.0  # radii traced past a trimmed end
 ACROSS = 1e-9  # rad: an exact end plane's normal is this close to the guide's tangent
@@ -149,9 +149,14 @@ def cut_edge(surface, tool_face, touch=None):
     off = 0.0
     for (u0, _), (u1, _) in zip(sol, sol[1:]):
         p = curve.value(0.5 * (u0 + u1))
-        off = max(off, (surface.value(*surface.parameter(p)) - p).Length,
-                  (tool.value(*tool.parameter(p)) - p).Length)
+        off = max(off, off_surface(surface, p), off_surface(tool, p))
     return curve.toShape(), off
+
+
+def _blend_of(face, blends):
+    """Index in `blends` of the blend replacing the rolling-ball face `face`, or None."""
+    return next((k for k, b in enumerate(blends)
+                 if any(face.isSame(g) for g in b.chain.faces)), None)
 
 
 def _touch(b, partner):
@@ -173,13 +178,9 @@ def trim(blends, original_face):
     extension survives; blends whose mitre partner is not among `blends` are returned
     too."""
     todo = [b for b in blends if any(not e.across for e in b.ends)]
-    failed = []
-    for b in todo:
-        for e in b.ends:
-            for f in e.fillets:
-                if not any(f.isSame(g) for o in blends for g in o.chain.faces):
-                    failed.append((b, "it meets another fillet at an angle, and that fillet "
-                                   "is kept as OCCT made it"))
+    failed = [(b, "it meets another fillet at an angle, and that fillet is kept as OCCT "
+               "made it") for b in todo
+              if any(_blend_of(f, todo) is None for e in b.ends for f in e.fillets)]
     if failed:
         return failed
     cuts = {id(b): [] for b in todo}
@@ -189,8 +190,7 @@ def trim(blends, original_face):
             if e.across:
                 continue
             for f in e.faces:
-                k = next((k for k, o in enumerate(todo)
-                          if any(f.isSame(g) for g in o.chain.faces)), None)
+                k = _blend_of(f, todo)
                 if k is not None and k < i:
                     continue  # a mitre's edge is made once, by the first of its blends
                 partner = None if k is None else todo[k]
