@@ -41,15 +41,18 @@ def sample_params(edge, n):
 
 def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
     """Continuity between faces fa and fb at (point, tangent, uv) triples on their
-    common boundary, uv being the point's parameters on fa or None (then it is
-    projected; projection onto B-spline surfaces costs milliseconds): worst g0, g1, g2, g2_rel, dk and a verdict (see the module doc).
+    common boundary, in order along it, uv being the point's parameters on fa or None
+    (then it is projected, starting from the previous point's parameters): worst g0, g1,
+    g2, g2_rel, dk and a verdict (see the module doc).
     oriented=False compares faces that are not yet in one shell: their normals may be
     opposite, so fb's normal is flipped where it faces away from fa's."""
     worst = {"g0": 0.0, "g1": 0.0, "g2": 0.0, "g2_rel": 0.0, "dk": 0.0}
     ka_max = kb_max = 0.0
+    ga = gb = None  # each projection starts from the previous point's (points are in order)
     for p, tangent, uv in points:
-        a = frame_at_point(fa, p) if uv is None else Frame(fa, *uv)
-        b = frame_at_point(fb, a.p)
+        a = frame_at_point(fa, p, ga) if uv is None else Frame(fa, *uv)
+        b = frame_at_point(fb, a.p, gb)
+        ga, gb = (a.u, a.v), (b.u, b.v)
         if not oriented and a.n.dot(b.n) < 0:
             b.n = -b.n
         d = a.n.cross(tangent)

@@ -29,10 +29,15 @@ NEWTON_DONE = 1e-14  # relative residual or step at which a cut point is converg
 class ChainEnd:
     """One end of an open chain: at 0 (the start of its sections, the blend's first v) or
     1 (the end, last v); faces: OCCT's faces met there; fillets: those of them that are
-    rolling-ball faces (mitres); across: True when the end is exact (see the module)."""
+    rolling-ball faces (mitres); edges: [(OCCT's end edge, the face it meets there)];
+    across: True when the end is exact (see the module)."""
 
     def __init__(self, at):
-        self.at, self.faces, self.fillets, self.across = at, [], [], False
+        self.at, self.faces, self.fillets, self.edges, self.across = at, [], [], [], False
+
+    def edges_on(self, face):
+        """OCCT's end edges where the fillet meets `face`."""
+        return [e for e, f in self.edges if f.isSame(face)]
 
 
 def _guide(chain, at):
@@ -51,6 +56,7 @@ def chain_ends(chain, fillet_faces):
     for edge, nb in chain.ends:
         d = [edge.distToShape(Part.Vertex(m))[0] for m, _ in guide]
         end = out[0 if d[0] <= d[1] else 1]
+        end.edges.append((edge, nb))
         if not any(nb.isSame(f) for f in end.faces):
             end.faces.append(nb)
             if any(nb.isSame(f) for f in fillet_faces):
@@ -110,21 +116,22 @@ def _newton(f, x, scale, what):
     raise ValueError("Newton's method for %s did not converge" % what)
 
 
-def cut_edge(surface, tool_face, touch=None):
+def cut_edge(surface, tool_face, near, touch=None):
     """The curve where a blend `surface` (u across, v along) crosses the surface T of
     `tool_face`, as an edge: at CUT_NODES + 1 values of u, Newton's method on
-    S(u, v) = T(s, t) for (v, s, t), marching across from a start given by OCCT's
-    section of the two; the points are interpolated by a C2 B-spline in u. touch: None, or (u side, tool's u
-    side) where the two surfaces are tangent (a mitre's end on the face both blends
-    touch); that end is where the two trimlines cross (Newton on S(u side, v) =
-    T(tool side, t)). Returns (edge, largest distance of the curve from either surface
-    between the nodes). Raises ValueError saying why it cannot."""
-    tool, face = tool_face.Surface, Part.Face(surface)
-    scale = face.BoundBox.DiagonalLength
-    sec = face.section(tool_face)
-    if not sec.Edges:
-        raise ValueError("the surfaces do not cross")
-    guesses = [surface.parameter(p) for e in sec.Edges for p in e.discretize(Number=16)]
+    S(u, v) = T(s, t) for (v, s, t), marching across. It starts at the point of the
+    edges `near` (OCCT's fillet edges where the rolling ball met the tool, close to the
+    cut) nearest to the start side. The points are interpolated by a C2 B-spline in u.
+    touch: None, or (u side, tool's u side) where the two surfaces are tangent (a
+    mitre's end on the face both blends touch); that end is where the two trimlines
+    cross (Newton on S(u side, v) = T(tool side, t)). Returns (edge, largest distance of
+    the curve from either surface between the nodes). Raises ValueError saying why it
+    cannot."""
+    tool = tool_face.Surface
+    scale = Part.Face(surface).BoundBox.DiagonalLength
+    guesses = [surface.parameter(p) for e in near for p in e.discretize(Number=8)]
+    if not guesses:
+        raise ValueError("OCCT's fillet has no edge there to start from")
     start = 0.0 if touch is not None and touch[0] == 1.0 else 1.0
     us = [start + (1.0 - 2.0 * start) * k / CUT_NODES for k in range(CUT_NODES + 1)]
     g = min(guesses, key=lambda q: abs(q[0] - start))
@@ -133,23 +140,25 @@ def cut_edge(surface, tool_face, touch=None):
     for u in us:
         if touch is not None and u == touch[0]:
             side = touch[1]
-            x = _newton(lambda y: (surface.value(u, y[0]) - tool.value(side, y[1]),
-                                   (surface.getDN(u, y[0], 0, 1), -tool.getDN(side, y[1], 0, 1))),
-                        [x[0], x[2]], scale, "the trimlines' crossing")
-            sol.append((u, x[0]))
+            v, t = _newton(lambda y: (surface.value(u, y[0]) - tool.value(side, y[1]),
+                                      (surface.getDN(u, y[0], 0, 1),
+                                       -tool.getDN(side, y[1], 0, 1))),
+                           [x[0], x[2]], scale, "the trimlines' crossing")
+            sol.append((u, v, side, t))
             break
         x = _newton(lambda y: (surface.value(u, y[0]) - tool.value(y[1], y[2]),
                                (surface.getDN(u, y[0], 0, 1), -tool.getDN(y[1], y[2], 1, 0),
                                 -tool.getDN(y[1], y[2], 0, 1))), x, scale, "the cut curve")
-        sol.append((u, x[0]))
+        sol.append((u, *x))
     sol.sort()
     curve = Part.BSplineCurve()
-    curve.interpolate(Points=[surface.value(u, v) for u, v in sol],
-                      Parameters=[u for u, _ in sol])
+    curve.interpolate(Points=[surface.value(q[0], q[1]) for q in sol],
+                      Parameters=[q[0] for q in sol])
     off = 0.0
-    for (u0, _), (u1, _) in zip(sol, sol[1:]):
-        p = curve.value(0.5 * (u0 + u1))
-        off = max(off, off_surface(surface, p), off_surface(tool, p))
+    for q0, q1 in zip(sol, sol[1:]):  # midway, projected from the nodes' mean parameters
+        m = [0.5 * (a + b) for a, b in zip(q0, q1)]
+        p = curve.value(m[0])
+        off = max(off, off_surface(surface, p, m[:2]), off_surface(tool, p, m[2:]))
     return curve.toShape(), off
 
 
@@ -196,9 +205,11 @@ def trim(blends, original_face):
                 partner = None if k is None else todo[k]
                 try:
                     if partner is None:
-                        edge, off = cut_edge(b.surface, _tool(original_face(f)))
+                        edge, off = cut_edge(b.surface, _tool(original_face(f)),
+                                             e.edges_on(f))
                     else:
-                        edge, off = cut_edge(b.surface, partner.full_face, _touch(b, partner))
+                        edge, off = cut_edge(b.surface, partner.full_face, e.edges_on(f),
+                                             _touch(b, partner))
                     if off > tol:
                         raise ValueError("its cut curve is %.1e off the surfaces" % off)
                 except ValueError as ex:
@@ -237,8 +248,9 @@ def side_range(b, side):
     if b.face is b.full_face:
         return tuple(b.surface.bounds()[2:4])
     vs = []
-    for e in b.face.Edges:
-        uv = [b.surface.parameter(v.Point) for v in e.Vertexes]
-        if all(abs(u - side) <= ON_TRIMLINE for u, _ in uv):
-            vs += [v for _, v in uv]
+    for e in b.face.Edges:  # the ends of each edge's curve on the blend's surface
+        c2d, a, z = b.face.curveOnSurface(e)
+        uv = [c2d.value(a), c2d.value(z)]
+        if all(abs(q.x - side) <= ON_TRIMLINE for q in uv):
+            vs += [q.y for q in uv]
     return (min(vs), max(vs)) if vs else tuple(b.surface.bounds()[2:4])

@@ -88,15 +88,54 @@ class Frame:
         return h + r, h - r, k, h
 
 
-def frame_at_point(face, p):
-    """Frame of `face` at the orthogonal projection of point p onto its surface."""
-    u, v = face.Surface.parameter(p)
+PROJECT_ITER = 20
+PROJECT_DONE = 1e-13  # relative parameter step at which a projection is converged
+
+
+def project(surface, p, guess=None):
+    """(u, v) of the orthogonal projection of point p onto surface.
+
+    With a guess (u, v) near the answer, Newton's method on the stationarity of
+    |S(u, v) - p|^2 (what marching along a curve provides): microseconds, where OCCT's
+    global projection (surface.parameter) costs about 0.4 ms on a B-spline surface.
+    Without a guess, or when Newton does not converge to a minimum inside the bounds of
+    a non-periodic direction, OCCT's global projection is used."""
+    if guess is None:
+        return surface.parameter(p)
+    u, v = guess
+    bounds = surface.bounds()
+    periodic = (surface.isUPeriodic(), surface.isVPeriodic())
+    for _ in range(PROJECT_ITER):
+        r = surface.value(u, v) - p
+        su, sv = surface.getDN(u, v, 1, 0), surface.getDN(u, v, 0, 1)
+        suu, suv, svv = (surface.getDN(u, v, 2, 0), surface.getDN(u, v, 1, 1),
+                         surface.getDN(u, v, 0, 2))
+        a, b, c = su.dot(su) + suu.dot(r), su.dot(sv) + suv.dot(r), sv.dot(sv) + svv.dot(r)
+        det = a * c - b * b
+        if not (a > 0.0 and det > 0.0):
+            break  # not near a minimum
+        gu, gv = su.dot(r), sv.dot(r)
+        du, dv = -(c * gu - b * gv) / det, -(a * gv - b * gu) / det
+        u, v = u + du, v + dv
+        if any(not periodic[k] and not bounds[2 * k] - 1e-9 <= (u, v)[k] <= bounds[2 * k + 1] + 1e-9
+               for k in (0, 1)):
+            break  # left the surface
+        if abs(du) + abs(dv) <= PROJECT_DONE * (1.0 + abs(u) + abs(v)):
+            return u, v
+    return surface.parameter(p)
+
+
+def frame_at_point(face, p, guess=None):
+    """Frame of `face` at the orthogonal projection of point p onto its surface (see
+    project for the guess)."""
+    u, v = project(face.Surface, p, guess)
     return Frame(face, u, v)
 
 
-def off_surface(surface, p):
-    """Distance from point p to its orthogonal projection onto surface."""
-    return (surface.value(*surface.parameter(p)) - p).Length
+def off_surface(surface, p, guess=None):
+    """Distance from point p to its orthogonal projection onto surface (see project for
+    the guess)."""
+    return (surface.value(*project(surface, p, guess)) - p).Length
 
 
 def frame_or_none(face, u, v):
