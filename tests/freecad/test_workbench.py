@@ -622,3 +622,20 @@ def test_c1_and_c3_fillets():
     assert len(lines) == 2 and all(": G2 " in ln for ln in lines)
     with pytest.raises(C2BlendError, match=r"C3 takes 5 shape parameters \(a0, a1, a2, a3, a4\)"):
         C2Blend.fillet(s, [edge], 2.0, continuity="C3", shape_params=(2, 1, 1, 1))
+
+
+def test_projection_from_a_guess():
+    """surface.project (Newton from a guess, OCCT's global projection as fallback) on a
+    rational B-spline sphere of radius 3: the foot of a point p is c + 3 (p - c)/|p - c|
+    (closed form), from a nearby guess, from a guess on the far side of the sphere and
+    without a guess."""
+    from c2bwb.geometry.surface import project
+    s = Part.makeSphere(3.0).Faces[0].toNurbs().Faces[0].Surface
+    worst = 0.0
+    for k in range(20):
+        u0, v0 = 0.3 + 0.25 * k, -1.2 + 0.12 * k
+        p = s.value(u0, v0) * (1.0 + 0.1 * math.sin(k))  # off the sphere, inside and out
+        foot = p * (3.0 / p.Length)
+        for guess in ((u0 + 0.05, v0 - 0.04), (u0 + math.pi, -v0), None):
+            worst = max(worst, (s.value(*project(s, p, guess)) - foot).Length)
+    assert worst < 1e-9
