@@ -63,6 +63,21 @@ def loft():
     raise AssertionError("no top edge")
 
 
+def l_bracket():
+    """An L-shaped profile in the xz plane (legs 40 long, 5 thick) extruded 30 along y;
+    returns (solid, name of the outer corner edge at x = z = 0, name of the inner corner
+    edge at x = z = 5)."""
+    s = Part.Face(Part.makePolygon([V(0, 0, 0), V(40, 0, 0), V(40, 0, 5), V(5, 0, 5),
+                                    V(5, 0, 40), V(0, 0, 40), V(0, 0, 0)])).extrude(V(0, 30, 0))
+    names = []
+    for x in (0, 5):
+        names += ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                  if max(abs(e.BoundBox.XMin - x), abs(e.BoundBox.XMax - x),
+                         abs(e.BoundBox.ZMin - x), abs(e.BoundBox.ZMax - x)) < 1e-9]
+    assert len(names) == 2, names
+    return (s, *names)
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

@@ -639,3 +639,39 @@ def test_projection_from_a_guess():
         for guess in ((u0 + 0.05, v0 - 0.04), (u0 + math.pi, -v0), None):
             worst = max(worst, (s.value(*project(s, p, guess)) - foot).Length)
     assert worst < 1e-9
+
+
+def _planar_faces_on(solid, axis, value):
+    """The planar faces of solid lying in the plane {axis = value} (axis 'x', 'y', 'z')."""
+    return [f for f in solid.Faces if f.Surface.isPlanar() and
+            abs(getattr(f.BoundBox, axis.upper() + "Min") - value) < 1e-9 and
+            abs(getattr(f.BoundBox, axis.upper() + "Max") - value) < 1e-9]
+
+
+def test_radius_wider_than_half_the_faces():
+    """R = 6 on an edge of the 10 mm box (OCCT accepts R < 10). The fillet shortens the
+    neighbouring faces' other edges without consuming them. The ball touches the two
+    perpendicular faces at distance R from the edge, so the face x = 0 keeps y in [6, 10]
+    and the face y = 0 keeps x in [6, 10] (closed form)."""
+    box = shapes.box()
+    solid, rep = C2Blend.fillet_report(box, ["Edge1"], 6.0, label="Box")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(solid.Faces) == 7
+    (fx,), (fy,) = _planar_faces_on(solid, "x", 0.0), _planar_faces_on(solid, "y", 0.0)
+    assert abs(fx.BoundBox.YMin - 6.0) < 1e-7 and abs(fy.BoundBox.XMin - 6.0) < 1e-7
+    assert rep["occt_volume"] < solid.Volume < box.Volume
+
+
+def test_l_bracket_outer_edge():
+    """The outer corner edge of an L bracket, whose end faces are L-shaped (no point of
+    a coarse grid of their parameter range lies inside them). The contact lines are R
+    from the corner on both faces (closed form), and each end face is one face."""
+    s, outer, _ = shapes.l_bracket()
+    solid, rep = C2Blend.fillet_report(s, [outer], 2.0, label="Bracket")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    (fx,), (fz,) = _planar_faces_on(solid, "x", 0.0), _planar_faces_on(solid, "z", 0.0)
+    assert abs(fx.BoundBox.ZMin - 2.0) < 1e-7 and abs(fz.BoundBox.XMin - 2.0) < 1e-7
+    assert len(_planar_faces_on(solid, "y", 0.0)) == 1 == len(_planar_faces_on(solid, "y", 30.0))

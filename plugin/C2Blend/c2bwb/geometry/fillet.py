@@ -165,8 +165,16 @@ def _on_face(face, p, tol):
 
 
 def _probe(face):
-    """A point inside face."""
-    return (interior_points(face, 3) or [face.CenterOfMass])[0]
+    """A point inside face: the first point of a 3 x 3 grid of its parameter range that
+    lies in the face, else (a face with no such point, as an L-shaped one) the centre of
+    the largest triangle of its mesh, put on its surface."""
+    inside = interior_points(face, 3)
+    if inside:
+        return inside[0]
+    pts, tris = face.tessellate(1e-2 * face.BoundBox.DiagonalLength)
+    tri = max(tris, key=lambda t: (pts[t[1]] - pts[t[0]]).cross(pts[t[2]] - pts[t[0]]).Length)
+    c = (pts[tri[0]] + pts[tri[1]] + pts[tri[2]]) * (1.0 / 3.0)
+    return face.Surface.value(*face.Surface.parameter(c))
 
 
 def _original(shape, face):
@@ -193,6 +201,15 @@ def _face_under(edge, faces, tol):
 def _edge_on_face(edge, face, tol):
     """True when edge lies on face (at its inner points, within tol)."""
     return all(_on_face(face, p, tol) for p in _inner_points(edge))
+
+
+def _consumed(edge, boundary, tol):
+    """True when no part of edge lies on `boundary` (the faces of OCCT's fillet result),
+    tested at its middle and at 1e-3 of its length from each end: an edge the fillet
+    only shortens keeps one end's neighbourhood, or its middle if shortened at both."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    return all(boundary.distToShape(Part.Vertex(edge.valueAt(a + x * (b - a))))[0] > tol
+               for x in (0.5, 1e-3, 1.0 - 1e-3))
 
 
 def _cut_face(face, tools, sharp, tol):
@@ -250,9 +267,8 @@ def assemble(shape, result, blended, fillet_faces, where):
                 touched.append(entry)
             entry[1].append(edge)
     boundary = Part.Compound(result.Faces)
-    sharp = [e for e in shape.Edges  # the edges the fillets consumed
-             if not any(e.isSame(r) for r in result.Edges) and boundary.distToShape(
-                 Part.Vertex(_midpoint(e)))[0] > tol]
+    sharp = [e for e in shape.Edges if not any(e.isSame(r) for r in result.Edges)
+             and _consumed(e, boundary, tol)]
     for orig, tools in touched:
         # edges of OCCT fillets kept on this face bound it too
         tools += [e for k in kept_fillets for e in k.Edges if _edge_on_face(e, orig, tol)]
