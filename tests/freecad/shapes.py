@@ -13,14 +13,14 @@ def box():
     return Part.makeBox(10, 10, 10)
 
 
-def shaft_on_plate():
-    """Cylinder r = 5, h = 20 fused on a 40 x 40 x 5 plate; returns (solid, junction edge
-    name)."""
-    plate = Part.makeBox(40, 40, 5, V(-20, -20, -5))
-    s = plate.fuse(Part.makeCylinder(5, 20)).removeSplitter()
+def shaft_on_plate(k=1.0):
+    """Cylinder r = 5, h = 20 fused on a 40 x 40 x 5 plate, all lengths times k; returns
+    (solid, junction edge name)."""
+    plate = Part.makeBox(40 * k, 40 * k, 5 * k, V(-20 * k, -20 * k, -5 * k))
+    s = plate.fuse(Part.makeCylinder(5 * k, 20 * k)).removeSplitter()
     for i, e in enumerate(s.Edges):
-        if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z) < 1e-9 \
-                and abs(e.Curve.Radius - 5) < 1e-9:
+        if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z) < 1e-9 * k \
+                and abs(e.Curve.Radius - 5 * k) < 1e-9 * k:
             return s, "Edge%d" % (i + 1)
     raise AssertionError("no junction edge")
 

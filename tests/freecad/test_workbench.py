@@ -675,3 +675,14 @@ def test_l_bracket_outer_edge():
     (fx,), (fz,) = _planar_faces_on(solid, "x", 0.0), _planar_faces_on(solid, "z", 0.0)
     assert abs(fx.BoundBox.ZMin - 2.0) < 1e-7 and abs(fz.BoundBox.XMin - 2.0) < 1e-7
     assert len(_planar_faces_on(solid, "y", 0.0)) == 1 == len(_planar_faces_on(solid, "y", 30.0))
+
+
+@pytest.mark.parametrize("k", [1e-3, 300.0, 1000.0])
+def test_shaft_on_plate_at_other_scales(k):
+    """The shaft on plate scaled by k (1 um to 40 m plates): G2 and a valid solid (the
+    BOP check's curve-on-surface test failed at k = 300 and 1000 when the new edges'
+    tolerances were raised from too few samples)."""
+    s, edge = shapes.shaft_on_plate(k)
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0 * k, label="ShaftPlate")
+    assert_valid(solid)
+    assert_g2(rep)
