@@ -2,8 +2,10 @@
 """C2Blend scripting API: curvature-continuous (G2) fillets and blends for macros.
 
     import C2Blend
-    solid, report = C2Blend.fillet(shape, ["Edge10"], 2.0)          # Part.Solid, dict
-    face, report = C2Blend.blend(face1, edge1, face2, edge2)       # Part.Face, dict
+    solid = C2Blend.fillet(shape, ["Edge10"], 2.0)                  # Part.Solid
+    solid, report = C2Blend.fillet_report(shape, ["Edge10"], 2.0)   # Part.Solid, dict
+    face = C2Blend.blend(face1, edge1, face2, edge2)                # Part.Face
+    face, report = C2Blend.blend(face1, edge1, face2, edge2, report=True)
     report = C2Blend.check(shape, ["Edge3"])                        # dict
 
 Every function leaves its inputs unchanged and raises C2Blend.Error, whose message

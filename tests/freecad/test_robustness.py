@@ -23,6 +23,11 @@ def doc():
     sp.Shape = s
     sheet = d.addObject("Part::Feature", "Sheet")
     sheet.Shape = Part.makeBox(10, 10, 10).Faces[0]
+    d.addObject("Part::Feature", "Pair").Shape = Part.makeCompound(
+        [Part.makeBox(10, 10, 10), Part.makeBox(10, 10, 10, FreeCAD.Vector(20, 0, 0))])
+    d.addObject("Part::Feature", "OpenBox").Shape = Part.Shell(Part.makeBox(10, 10, 10).Faces[:5])
+    b = Part.makeBox(10, 10, 10)
+    d.addObject("Part::Feature", "Rounded").Shape = b.makeFillet(2.0, [b.Edges[0]])
     d.recompute()
     yield d
     FreeCAD.closeDocument(d.Name)
@@ -48,6 +53,15 @@ BAD_FILLETS = [
     ("Box", ["Edge1"], 2.0, {"shape_params": (1, math.inf, 1, 1)},
      r"Box: shape_params: shape parameters must be finite"),
     ("Box", ["Edge1", "Edge2", "Edge3"], 6.0, {}, r"Box\.Edge1, Box\.Edge2, Box\.Edge3: "),
+    ("Pair", ["Edge1"], 2.0, {}, r"Pair: the shape is a Compound with 2 solid\(s\) and 0 "
+     r"face\(s\) outside them; a fillet needs one closed solid"),
+    ("OpenBox", ["Edge1"], 2.0, {}, r"OpenBox: the shape is a Shell with 0 solid\(s\) and 5 "
+     r"face\(s\) outside them"),
+    ("Rounded", [lambda s: next(  # where OCCT's fillet meets a face, tangentially
+        "Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Line)
+        and any(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face)))],
+     1.0, {}, r"Rounded\.Edge\d+: the faces meet tangentially along the edge .* no corner to "
+     r"fillet"),
 ]
 
 
@@ -55,8 +69,10 @@ BAD_FILLETS = [
 def test_bad_fillet_leaves_document_unchanged(doc, name, edges, radius, kw, fragment):
     before = shapes.document_state(doc)
     undo = doc.UndoCount
+    obj = doc.getObject(name)
+    edges = [e(obj.Shape) if callable(e) else e for e in edges]
     with pytest.raises(C2BlendError, match=fragment):
-        make.make_fillet(doc.getObject(name), edges, radius, **kw)
+        make.make_fillet(obj, edges, radius, **kw)
     assert shapes.document_state(doc) == before
     assert doc.UndoCount == undo  # no transaction was left behind
 
@@ -95,7 +111,8 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
         if name not in [o.Name for o in doc.Objects]:
             break
         doc.undo()
-    assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet"]
+    assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet", "Pair", "OpenBox",
+                                             "Rounded"]
     doc.redo()
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()

@@ -27,8 +27,8 @@ from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
 from . import ends
-from .rollingball import RollingBallFace, chains, interior_points, new_faces
-from .surface import off_surface
+from .rollingball import TANGENT_ANGLE, RollingBallFace, chains, interior_points, new_faces
+from .surface import angle, frame_at_point, off_surface
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -69,11 +69,29 @@ def resolve_edges(shape, edges, label):
     if not out:
         raise C2BlendError("no edges given", label)
     for name, edge in out:
-        n = len(ck.edge_faces(shape, edge))
-        if n != 2:
+        faces = ck.edge_faces(shape, edge)
+        if len(faces) != 2:
             raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2"
-                               % (n, "" if n == 1 else "s"), "%s.%s" % (label, name))
+                               % (len(faces), "" if len(faces) == 1 else "s"),
+                               "%s.%s" % (label, name))
+        p = _midpoint(edge)
+        a = angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
+        if a < TANGENT_ANGLE:
+            raise C2BlendError("the faces meet tangentially along the edge (their normals "
+                               "differ by %.1e rad): there is no corner to fillet" % a,
+                               "%s.%s" % (label, name))
     return out
+
+
+def check_solid(shape, label):
+    """Raise C2BlendError naming `label` unless shape is one closed solid."""
+    solids = [] if shape.isNull() else shape.Solids
+    if len(solids) != 1 or len(shape.Faces) != len(solids[0].Faces):
+        raise C2BlendError("the shape is a %s with %d solid(s) and %d face(s) outside "
+                           "them; a fillet needs one closed solid"
+                           % ("null shape" if shape.isNull() else shape.ShapeType,
+                              len(solids), len(shape.Faces) - sum(len(s.Faces) for s in solids)),
+                           label)
 
 
 def check_params(radius, continuity, shape_params, tension, label):
@@ -390,6 +408,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     t0 = time.perf_counter()
     shape_params = check_params(radius, continuity, shape_params, tension, label)
     names = resolve_edges(shape, edges, label)
+    check_solid(shape, label)
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     try:
         result = shape.makeFillet(radius, [e for _, e in names])
