@@ -686,3 +686,22 @@ def test_shaft_on_plate_at_other_scales(k):
     solid, rep = C2Blend.fillet_report(s, [edge], 2.0 * k, label="ShaftPlate")
     assert_valid(solid)
     assert_g2(rep)
+
+
+def test_overshooting_blend_is_kept():
+    """On a box edge (two planes at 90 degrees, straight guide) the blend's cross-section
+    is the quintic Hermite curve x(u) = R h0(u) - s h1(u), with end speed s = tension *
+    R sqrt 2 (trimlines.py). Near the far trimline x ~ (10 R - 4 s)(1 - u)^3, so it
+    crosses the face x = 0 when tension > 2.5 / sqrt 2 = 1.768 (closed form). Below: G2.
+    Above: the blend would cut into the part, so OCCT's face is kept and the report says
+    why; the solid is OCCT's fillet. The same holds on the shaft on plate at tension 3."""
+    box = shapes.box()
+    solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, tension=1.74, label="Box")
+    assert_valid(solid)
+    assert_g2(rep)
+    for s, edge in ((box, "Edge1"), shapes.shaft_on_plate()):
+        solid, rep = C2Blend.fillet_report(s, [edge], 2.0, tension=3.0 if s is not box else 1.8)
+        assert_valid(solid)
+        assert not rep["blends"] and rep["verdict"] == "G1"
+        assert "overshoots" in rep["kept_occt_faces"][0]["reason"]
+        assert abs(solid.Volume - rep["occt_volume"]) < 1e-9 * solid.Volume

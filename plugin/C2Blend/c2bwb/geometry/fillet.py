@@ -28,7 +28,7 @@ from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
 from . import ends
 from .rollingball import TANGENT_ANGLE, RollingBallFace, chains, interior_points, new_faces
-from .surface import angle, frame_at_point, off_surface
+from .surface import Frame, angle, frame_at_point, off_surface, project
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -161,6 +161,12 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                           "to %.1e (relative) with %d samples, too rough for an exact G2 "
                           "blend" % (err, n))
     surface, fit = fit_surface(blend, tol_rel, where)
+    over = overshoot(surface, chain.sides, contact.signs)
+    if over > ON_FACE * fit["tolerance"]:
+        raise NotReplaced("the blend overshoots: it crosses the surface of a face it joins by "
+                          "%.3g (model units), cutting into the part or bulging out of it; a "
+                          "lower tension (here %g) or other shape parameters keep it inside "
+                          "the corner" % (over, tension))
     b = Blended(chain, at_ends, where, surface, fit, n, err)
     v_ends = surface.bounds()[2:4]
     for end in at_ends:
@@ -171,6 +177,30 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                 raise NotReplaced("the blend's end section leaves the end face by %.1e"
                                   % gap)
     return b
+
+
+OVER_V, OVER_U = 16, 12  # samples along and across (the half next to each face)
+
+
+def overshoot(surface, sides, signs):
+    """How far (model units, 0 if not at all) the blend `surface` crosses to the wrong
+    side of the surfaces of its side faces (sides[0] at u = 0, sides[1] at u = 1): it
+    should stay on the rolling ball's side of each (signs: contact.Contact.signs).
+    Measured at OVER_V values of v, marching from each trimline to u = 1/2 (projections
+    start from the previous point's)."""
+    u0, u1, v0, v1 = surface.bounds()
+    worst = 0.0
+    for k, (face, g) in enumerate(zip(sides, signs)):
+        for i in range(OVER_V):
+            v = v0 + (v1 - v0) * (i + 0.5) / OVER_V
+            guess = None
+            for j in range(1, OVER_U + 1):
+                x = 0.5 * j / OVER_U
+                p = surface.value(x if k == 0 else 1.0 - x, v)
+                guess = project(face.Surface, p, guess)
+                f = Frame(face, *guess)
+                worst = max(worst, -math.copysign(1.0, g) * (p - f.p).dot(f.n))
+    return worst
 
 
 def _midpoint(edge):

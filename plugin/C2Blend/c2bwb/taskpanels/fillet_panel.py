@@ -97,10 +97,12 @@ class FilletPanel:
         except C2BlendError as ex:
             self.status.setText("Cannot fillet: %s" % ex)
             return
-        self.status.setText("%s; %d blend face(s), fit deviation %.2g, %.0f ms"
+        kept = "".join("\nKept as OCCT's G1 fillet at %s: %s" % (k["where"], k["reason"])
+                       for k in rep["kept_occt_faces"])
+        self.status.setText("%s; %d blend face(s), fit deviation %.2g, %.0f ms%s"
                             % (rep["verdict"], len(rep["blends"]),
                                max([b["fit_deviation"] for b in rep["blends"]] or [0.0]),
-                               1e3 * rep["seconds"]))
+                               1e3 * rep["seconds"], kept))
         node = coin.SoSeparator()
         mat = coin.SoMaterial()
         mat.diffuseColor.setValue(0.85, 0.55, 0.2)
