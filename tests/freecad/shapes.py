@@ -78,6 +78,18 @@ def l_bracket():
     return (s, *names)
 
 
+def step():
+    """A 30 x 20 x 10 block with a 15 x 20 x 10 block on its left half; returns (solid,
+    name of the concave edge at x = 15, z = 10, name of the convex edge at x = 15,
+    z = 20), both along y."""
+    s = Part.makeBox(30, 20, 10).fuse(Part.makeBox(15, 20, 10, V(0, 0, 10))).removeSplitter()
+    names = ["Edge%d" % (i + 1) for z in (10, 20) for i, e in enumerate(s.Edges)
+             if max(abs(e.BoundBox.XMin - 15), abs(e.BoundBox.XMax - 15),
+                    abs(e.BoundBox.ZMin - z), abs(e.BoundBox.ZMax - z)) < 1e-9]
+    assert len(names) == 2, names
+    return (s, *names)
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

@@ -705,3 +705,55 @@ def test_overshooting_blend_is_kept():
         assert not rep["blends"] and rep["verdict"] == "G1"
         assert "overshoots" in rep["kept_occt_faces"][0]["reason"]
         assert abs(solid.Volume - rep["occt_volume"]) < 1e-9 * solid.Volume
+
+
+def _corner_area(radius, tension=1.0):
+    """Area between a 90 degree corner's two legs and the blend's cross-section from
+    (R, 0) to (0, R) (closed form): the quintic Hermite curve x(u) = R h0(u) - s h1(u),
+    y(u) = x(1 - u), s = tension R sqrt 2, of a straight edge between two planes; by
+    Green's theorem (the legs pass through the corner) A = 1/2 |int x y' - y x' du|."""
+    from numpy.polynomial import polynomial as P
+    s = tension * radius * math.sqrt(2.0)
+    x = P.polysub(P.polymul([radius], [1, 0, 0, -10, 15, -6]),
+                  P.polymul([s], [0, 1, 0, -6, 8, -3]))
+    y = [0.0]
+    for k, c in enumerate(x):  # y(u) = x(1 - u)
+        y = P.polyadd(y, c * P.polypow([1, -1], k))
+    f = P.polyint(P.polysub(P.polymul(x, P.polyder(y)), P.polymul(y, P.polyder(x))))
+    return 0.5 * abs(P.polyval(1.0, f) - P.polyval(0.0, f))
+
+
+def test_l_bracket_inner_edge():
+    """The inner (concave) corner edge of an L bracket. The fillet adds material, so each
+    L-shaped end face grows by the region between the corner and the blend's end
+    section: its area is 375 + A and the volume 11250 + 30 A, with A the closed-form
+    area of that region (_corner_area); the end faces stay one face each."""
+    s, _, inner = shapes.l_bracket()
+    solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    a = _corner_area(2.0)
+    for y in (0.0, 30.0):
+        (end,) = _planar_faces_on(solid, "y", y)
+        assert abs(end.Area - (375.0 + a)) < 1e-6
+    assert abs(solid.Volume - (s.Volume + 30.0 * a)) < 1e-6
+    assert len(solid.Faces) == len(s.Faces) + 1
+
+
+def test_concave_and_convex_edges_in_one_call():
+    """A step's concave and convex edges at R = 2 in one call: two G2 blends. The
+    convex one removes the cross-section area A over the 20 mm width, the concave one
+    adds the same A (congruent 90 degree corners), so the volume is unchanged, and each
+    end face is one face whose area is unchanged too."""
+    s, concave, convex = shapes.step()
+    solid, rep = C2Blend.fillet_report(s, [concave, convex], 2.0, label="Step")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 2 and not rep["kept_occt_faces"]
+    assert abs(solid.Volume - s.Volume) < 1e-6
+    for y in (0.0, 20.0):
+        (end,) = _planar_faces_on(solid, "y", y)
+        assert abs(end.Area - 450.0) < 1e-6
+    solid1, _ = C2Blend.fillet_report(s, [concave], 2.0, label="Step")
+    assert abs(solid1.Volume - (s.Volume + 20.0 * _corner_area(2.0))) < 1e-6

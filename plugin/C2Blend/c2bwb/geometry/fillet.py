@@ -141,12 +141,18 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     Raises NotReplaced saying why it cannot."""
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces)
-    for end_edge, face in chain.ends:
-        if not any(face.isSame(f) for f in fillet_faces) and not _on_face(
-                original(face), _midpoint(end_edge), 10.0 * max(end_edge.Tolerance, 1e-7)):
-            raise NotReplaced("OCCT's fillet ends on a part of its end face that is not on "
-                              "the original solid's face (OCCT extends that face); the blend "
-                              "cannot be joined to the original face there")
+    for end in at_ends:
+        for end_edge, face in end.edges:
+            if any(face.isSame(f) for f in fillet_faces) or _on_face(
+                    original(face), _midpoint(end_edge), 10.0 * max(end_edge.Tolerance, 1e-7)):
+                continue
+            if not end.across:  # a concave fillet ending on a slanted or curved face
+                raise NotReplaced("OCCT's fillet ends on a part of its end face that is not "
+                                  "on the original solid's face (OCCT extends that face), "
+                                  "and that face is not a plane across the fillet; the blend "
+                                  "cannot be joined to the original face there")
+            # a concave fillet ending on a plane across it: the end face grows by the
+            # region between the corner and the blend's end section (assemble)
     try:
         contact = Contact(chain, radius, ends.extension(at_ends, radius))
         blend, n, err = solve_sampled(
@@ -226,9 +232,41 @@ def _probe(face):
 
 
 def _original(shape, face):
-    """The face of the original solid `shape` that a face of OCCT's result lies on."""
-    probe = Part.Vertex(_probe(face))
-    return min(shape.Faces, key=lambda g: g.distToShape(probe)[0])
+    """The face of the original solid `shape` that a face of OCCT's result lies on: the
+    nearest to a point inside it of those whose surface holds that point (a concave
+    fillet extends its end faces beyond the original ones)."""
+    p = _probe(face)
+    tol = 1e-7 * shape.BoundBox.DiagonalLength
+    on = [g for g in shape.Faces if off_surface(g.Surface, p) <= tol] or shape.Faces
+    probe = Part.Vertex(p)
+    return min(on, key=lambda g: g.distToShape(probe)[0])
+
+
+def _growth(face, edge, tol):
+    """The planar region by which a concave fillet extends `face` (a plane): bounded by
+    `edge` (the fillet's end section, on the face's plane, outside the face) and the
+    parts of the two edges of the face that run from its ends to the corner vertex they
+    share. Returns (region face, corner point), or None when edge does not span such a
+    corner."""
+    ends = [v.Point for v in edge.Vertexes]
+    if len(ends) != 2:
+        return None
+    for corner in face.Vertexes:
+        at = [e for e in face.Edges if any(corner.isSame(v) for v in e.Vertexes)]
+        legs = []
+        for p in ends:
+            e = next((e for e in at if e.distToShape(Part.Vertex(p))[0] <= tol), None)
+            if e is None:
+                break
+            c = e.Curve
+            a, b = c.parameter(p), c.parameter(corner.Point)
+            legs.append(Part.Edge(c, min(a, b), max(a, b)))
+        if len(legs) == 2:
+            region = Part.Face(Part.Wire(Part.__sortEdges__([edge] + legs)))
+            if region.normalAt(0, 0).dot(face.normalAt(0, 0)) < 0:
+                region.reverse()  # oriented like face, so the two merge into one
+            return region, corner.Point
+    return None
 
 
 def _inner_points(edge):
@@ -320,9 +358,19 @@ def assemble(shape, result, blended, fillet_faces, where):
              and _consumed(e, boundary, tol)]
     for orig, tools in touched:
         # edges of OCCT fillets kept on this face bound it too
-        tools += [e for k in kept_fillets for e in k.Edges if _edge_on_face(e, orig, tol)]
+        tools += [e for k in kept_fillets for e in k.Edges
+                  if _face_under(e, [orig], tol) is not None]
+        inside = [e for e in tools if _edge_on_face(e, orig, tol)]
         try:
-            pieces = _cut_face(orig, tools, sharp, tol)
+            grown = [g for g in (_growth(orig, e, tol) for e in tools
+                                 if orig.Surface.isPlanar() and not any(e is x for x in inside))
+                     if g is not None]
+            # the face keeps its corners where concave fillets end (they grow from there)
+            corners = [Part.Vertex(c) for _, c in grown]
+            pieces = _cut_face(orig, inside, [e for e in sharp if all(
+                e.distToShape(c)[0] > tol for c in corners)], tol)
+            if grown:  # concave fillets' end sections extend the face: one face again
+                pieces = pieces[0].multiFuse(pieces[1:] + [g for g, _ in grown]).removeSplitter().Faces
         except Exception as ex:
             raise C2BlendError("cannot cut face %s of the original solid along the blend "
                                "(%s)" % (ck.element_name(shape, orig, "Face"), ex), where,
