@@ -46,9 +46,8 @@ extern "C" {
  * uniform samples. Samples are n_samples points [x, y, z], stored flat and row-major
  * (3 n_samples doubles), at v0 + i L / n_samples (periodic: the end point is not
  * repeated; n_samples >= 4) or v0 + i L / (n_samples - 1) (open: both ends;
- * n_samples >= 7), L = v1 - v0. Their truncation estimate is meaningful only when the
- * count halves onto every other sample: even (periodic) or odd (open), e.g. 2^k or
- * 2^k + 1 (c2b_vseries_project_samples()). Sampled curves do not depend on t.
+ * n_samples >= 7), L = v1 - v0. Their truncation estimate needs an even count on a
+ * periodic range (c2b_vseries_project_samples()). Sampled curves do not depend on t.
  */
 typedef struct c2b_curve {
     c2b_vt_fn fn[C2B_NCOMP];

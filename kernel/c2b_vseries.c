@@ -699,12 +699,20 @@ c2b_status c2b_vseries_project_samples(const c2b_vdomain *dom, const double *sam
     }
     for (int i = 0; i < n; i++)
         out->err_abs = fmax(out->err_abs, fabs(vals[i] - samples[(size_t)i * (size_t)stride]));
-    int nh = dom->periodic ? (n % 2 == 0 ? n / 2 : 0) : ((n - 1) % 2 == 0 ? (n - 1) / 2 + 1 : 0);
+    /* every other sample of m samples over sub; an even count on an open range uses the
+     * first n - 1 samples (an odd count), over the range they span */
+    c2b_vdomain sub = *dom;
+    int m = n;
+    if (!dom->periodic && n % 2 == 0) {
+        m = n - 1;
+        sub.v1 = dom->v0 + (dom->v1 - dom->v0) * (n - 2) / (n - 1);
+    }
+    int nh = dom->periodic ? (n % 2 == 0 ? n / 2 : 0) : (m - 1) / 2 + 1;
     if (nh >= nmin) {
-        st = samples_series(dom, samples, 2 * stride, nh, drop, &half, err);
-        if (!st && series_on_grid(&half, dom, n, vals))
+        st = samples_series(&sub, samples, 2 * stride, nh, drop, &half, err);
+        if (!st && series_on_grid(&half, &sub, m, vals))
             st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-        for (int i = 1; !st && i < n; i += 2)
+        for (int i = 1; !st && i < m; i += 2)
             out->err_abs = fmax(out->err_abs, fabs(vals[i] - samples[(size_t)i * (size_t)stride]));
     }
     c2b_vseries_clear(&half);

@@ -109,8 +109,9 @@ c2b_status c2b_vseries_project(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2
  * repeated); open data are n >= 7 samples at v0 + i L / (n-1). err_abs is the larger
  * of the error at the samples (after small modes are dropped) and a leave-half-out
  * estimate: the series built from every other sample, checked at the samples left
- * out. The latter bounds the error between samples (conservatively, since it is
- * measured at half the resolution).
+ * out (an even count on an open range: of the first n - 1 samples, over the range
+ * they span; an odd count on a periodic range: no estimate). The latter bounds the
+ * error between samples (conservatively, since it is measured at half the resolution).
  * @return C2B_OK; C2B_ERR_SPEC for too few or non-finite samples; C2B_ERR_LIMIT for
  *         more than 4 * tol->max_samples samples; C2B_ERR_NOMEM.
  */

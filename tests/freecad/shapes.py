@@ -90,6 +90,33 @@ def step():
     return (s, *names)
 
 
+def ruled_block():
+    """A block whose front face is ruled (a degree-8 B-spline from OCCT) between the line
+    (0, 0, 0)-(20, 0, 0) and an arc through (10, -4, 10) ending at (0, 0, 10) and
+    (20, 0, 10), closed by the planes z = 0, z = 10, y = 20, x = 0 and x = 20; returns
+    (solid, name of the arc edge between the ruled face and the top)."""
+    a = Part.makeLine(V(0, 0, 0), V(20, 0, 0))
+    arc = Part.Arc(V(0, 0, 10), V(10, -4, 10), V(20, 0, 10)).toShape()
+
+    def quad(*p):
+        return Part.Face(Part.makePolygon(list(p) + [p[0]]))
+    top = Part.Face(Part.Wire([arc, Part.makeLine(V(20, 0, 10), V(20, 20, 10)),
+                               Part.makeLine(V(20, 20, 10), V(0, 20, 10)),
+                               Part.makeLine(V(0, 20, 10), V(0, 0, 10))]))
+    shell = Part.Shell([Part.makeRuledSurface(a, arc), top,
+                        quad(V(0, 0, 0), V(20, 0, 0), V(20, 20, 0), V(0, 20, 0)),
+                        quad(V(0, 20, 0), V(20, 20, 0), V(20, 20, 10), V(0, 20, 10)),
+                        quad(V(0, 0, 0), V(0, 20, 0), V(0, 20, 10), V(0, 0, 10)),
+                        quad(V(20, 0, 0), V(20, 20, 0), V(20, 20, 10), V(20, 0, 10))])
+    shell.sewShape()
+    s = Part.Solid(shell)
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if abs(e.BoundBox.ZMin - 10) < 1e-9 and abs(e.BoundBox.ZMax - 10) < 1e-9
+             and e.BoundBox.YMin < -1]
+    assert len(names) == 1, names
+    return s, names[0]
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

@@ -757,3 +757,16 @@ def test_concave_and_convex_edges_in_one_call():
         assert abs(end.Area - 450.0) < 1e-6
     solid1, _ = C2Blend.fillet_report(s, [concave], 2.0, label="Step")
     assert abs(solid1.Volume - (s.Volume + 20.0 * _corner_area(2.0))) < 1e-6
+
+
+def test_ruled_face_edge():
+    """The arc edge between a ruled B-spline face and a plane, an open chain whose ends
+    are trimmed by the slanted side planes x = 0 and x = 20. Its boundary data need 256
+    samples; with 32 the trimline was 1e-7 to 1e-6 off the ruled face between samples
+    (G0), because the kernel measured no sampling error for an even count on an open
+    range."""
+    s, edge = shapes.ruled_block()
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.5, label="Ruled")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert rep["blends"][0]["samples"] > 32

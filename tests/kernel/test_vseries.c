@@ -93,6 +93,30 @@ static void test_structures(void)
     project("exp(cos 3v), periodic", fsmooth, NULL, per2, C2B_VM_FFT, 1e-13);
 }
 
+/* Samples of exp(cos 3v) on the open range [0, 2]: the reported error of n samples,
+ * even and odd n, bounds the true error between samples (fresh points). */
+static void test_sample_error_estimate(void)
+{
+    c2b_vdomain d = {0, 2, 0};
+    for (int n = 32; n <= 65; n += (n == 32 ? 1 : 31)) {
+        double smp[65];
+        for (int i = 0; i < n; i++)
+            smp[i] = fsmooth(2.0 * i / (n - 1));
+        c2b_vseries s;
+        memset(&s, 0, sizeof s);
+        c2b_error err;
+        char what[160];
+        snprintf(what, sizeof what, "%d samples (open range): expanded", n);
+        if (!check_true(what, c2b_vseries_project_samples(&d, smp, 1, n, NULL, &s, &err) == C2B_OK))
+            continue;
+        double te = true_error(&s, &d, fsmooth);
+        snprintf(what, sizeof what, "%d samples (open range): reported error %.3g bounds the true %.3g",
+                 n, s.err_abs, te);
+        check_true(what, te > 1e-9 && te <= s.err_abs);
+        c2b_vseries_clear(&s);
+    }
+}
+
 static void test_bad_samples(void)
 {
     double s[8] = {0, 1, 2, NAN, 4, 5, 6, 7};
@@ -145,6 +169,7 @@ static void test_k200_blend(void)
 int main(void)
 {
     test_structures();
+    test_sample_error_estimate();
     test_bad_samples();
     test_k200_blend();
     return test_summary("test_vseries");
