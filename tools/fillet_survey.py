@@ -88,6 +88,14 @@ def parts():
     out.append(("box edge ending on a concave cylinder", cc,
                 names(cc, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
                       and abs(e.BoundBox.YMax) < 1e-9), 1.0))
+    out.append(("box edge, R = 6 (over half the faces)", b, ["Edge1"], 6.0))
+    lb, outer, inner = shapes.l_bracket()
+    out.append(("L bracket, outer edge", lb, [outer], 2.0))
+    out.append(("L bracket, inner (concave) edge", lb, [inner], 2.0))
+    st, concave, convex = shapes.step()
+    out.append(("step, concave and convex edges", st, [concave, convex], 2.0))
+    rb, arc = shapes.ruled_block()
+    out.append(("ruled B-spline face / plane (arc edge)", rb, [arc], 1.5))
     return out
 
 
