@@ -117,6 +117,25 @@ def ruled_block():
     return s, names[0]
 
 
+def loft_with_boss(angle):
+    """A loft from a circle r = 10 at z = 0 to a 12 x 8 ellipse at z = 20 (one B-spline
+    side face, its seam at angle 0), with a cylinder r = 3 along the horizontal
+    direction `angle` (degrees) from (0, 0, 10); returns (solid, names of the two edges
+    of the junction curve)."""
+    import math
+    body = Part.makeLoft([Part.Wire(Part.makeCircle(10)),
+                          Part.Wire(Part.Ellipse(V(0, 0, 20), 12, 8).toShape())], True, False)
+    d = V(math.cos(math.radians(angle)), math.sin(math.radians(angle)), 0)
+    s = body.fuse(Part.makeCylinder(3, 20, V(0, 0, 10), d)).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if len({f.hashCode() for f in s.ancestorsOfType(e, Part.Face)}) == 2
+             and 5 < e.BoundBox.ZMin and e.BoundBox.ZMax < 15 and e.BoundBox.ZLength > 1e-6
+             and 6 < (e.BoundBox.Center - V(0, 0, 10)).Length < 15
+             and e.BoundBox.DiagonalLength < 9]
+    assert len(names) == 2, names
+    return s, names
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

@@ -770,3 +770,19 @@ def test_ruled_face_edge():
     assert_valid(solid)
     assert_g2(rep)
     assert rep["blends"][0]["samples"] > 32
+
+
+def test_boss_on_a_seam_is_kept():
+    """A boss whose junction with a lofted face straddles that face's seam. OCCT's
+    general fuse loses the face when it is cut along the blend's closed trimline, so the
+    fillet is kept as OCCT's, with that reason, and the solid is valid (it was a sewing
+    error). The same boss 45 degrees off the seam is G2."""
+    s, edges = shapes.loft_with_boss(0.0)
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    assert "seam" in rep["kept_occt_faces"][0]["reason"]
+    s, edges = shapes.loft_with_boss(45.0)
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
+    assert_valid(solid)
+    assert_g2(rep)

@@ -40,6 +40,15 @@ class NotReplaced(Exception):
     """This chain cannot be replaced by a G2 blend; the message says why."""
 
 
+class Unassembled(Exception):
+    """The original faces cannot be cut along these blends (attribute blends); the
+    message says why. fillet() keeps OCCT's faces for them and assembles again."""
+
+    def __init__(self, blends, message):
+        super().__init__(message)
+        self.blends = blends
+
+
 def resolve_edges(shape, edges, label):
     """[(name, Part.Edge)] from Part.Edge objects, 'EdgeN' names or 1-based indices.
     Raises C2BlendError naming the offending element."""
@@ -166,7 +175,10 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
         raise NotReplaced("the boundary data sampled along the exact contact converge only "
                           "to %.1e (relative) with %d samples, too rough for an exact G2 "
                           "blend" % (err, n))
-    surface, fit = fit_surface(blend, tol_rel, where)
+    try:
+        surface, fit = fit_surface(blend, tol_rel, where)
+    except C2BlendError as ex:  # the B-spline fit's limits, not the user's input
+        raise NotReplaced(str(ex).split(": ", 1)[-1]) from None
     over = overshoot(surface, chain.sides, contact.signs)
     if over > ON_FACE * fit["tolerance"]:
         raise NotReplaced("the blend overshoots: it crosses the surface of a face it joins by "
@@ -302,6 +314,10 @@ def _cut_face(face, tools, sharp, tol):
     """The pieces of an original face, cut along the edges `tools` lying on it, that do
     not touch any of the `sharp` edges the fillets consumed."""
     pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
+    if abs(sum(f.Area for f in pieces) - face.Area) > 1e-3 * face.Area:  # areas: ~1e-6
+        raise ValueError("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
+                         "trimline crosses the face's seam" % (sum(f.Area for f in pieces),
+                                                                face.Area))
     return [f for f in pieces if all(f.distToShape(e)[0] > tol for e in sharp)]
 
 
@@ -339,7 +355,7 @@ def assemble(shape, result, blended, fillet_faces, where):
     kept_fillets = [f for f in fillet_faces if not any(f.isSame(d) for d in drop)]
     faces_out = [b.face for b in blended]
     # the original faces the blends touch, with the blend's edges lying on each
-    touched = []  # [(original face, [tool edges])]
+    touched = []  # [(original face, [tool edges], [blends they come from])]
     for b in blended:
         near = list(b.chain.sides) + [f for e in b.ends for f in e.faces
                                       if not any(f.isSame(g) for g in e.fillets)]
@@ -350,13 +366,15 @@ def assemble(shape, result, blended, fillet_faces, where):
             orig = _original(shape, res_face)
             entry = next((t for t in touched if t[0].isSame(orig)), None)
             if entry is None:
-                entry = (orig, [])
+                entry = (orig, [], [])
                 touched.append(entry)
             entry[1].append(edge)
+            if not any(b is x for x in entry[2]):
+                entry[2].append(b)
     boundary = Part.Compound(result.Faces)
     sharp = [e for e in shape.Edges if not any(e.isSame(r) for r in result.Edges)
              and _consumed(e, boundary, tol)]
-    for orig, tools in touched:
+    for orig, tools, owners in touched:
         # edges of OCCT fillets kept on this face bound it too
         tools += [e for k in kept_fillets for e in k.Edges
                   if _face_under(e, [orig], tol) is not None]
@@ -372,15 +390,15 @@ def assemble(shape, result, blended, fillet_faces, where):
             if grown:  # concave fillets' end sections extend the face: one face again
                 pieces = pieces[0].multiFuse(pieces[1:] + [g for g, _ in grown]).removeSplitter().Faces
         except Exception as ex:
-            raise C2BlendError("cannot cut face %s of the original solid along the blend "
-                               "(%s)" % (ck.element_name(shape, orig, "Face"), ex), where,
-                               "sewing") from None
+            raise Unassembled(owners, "face %s of the original solid cannot be cut along "
+                              "its blend (%s)" % (ck.element_name(shape, orig, "Face"),
+                                                  str(ex) or type(ex).__name__)) from None
         faces_out += pieces
     for f in result.Faces:
         if any(f.isSame(d) for d in drop):
             continue
         if not any(f.isSame(k) for k in kept_fillets) and \
-                any(_on_face(orig, _probe(f), tol) for orig, _ in touched):
+                any(_on_face(orig, _probe(f), tol) for orig, _, _ in touched):
             continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
     sewn = Part.Compound(faces_out)
@@ -515,16 +533,20 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                                       lambda f: _original(shape, f)))
         except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
-    while True:  # cut blends back at trimmed ends; a blend that cannot be cut is kept
+    t_solve = None
+    while True:  # a blend that cannot be cut back or cut into its faces is kept as OCCT's
         failed = ends.trim(blended, lambda f: _original(shape, f))
         if not failed:
-            break
+            t_solve = t_solve or time.perf_counter()
+            try:
+                solid = assemble(shape, result, blended, fillet_faces, where_all) if blended \
+                    else (result.Solids[0] if len(result.Solids) == 1 else result)
+                break
+            except Unassembled as ex:
+                failed = [(b, str(ex)) for b in ex.blends]
         for b, reason in failed:
             kept.append({"where": b.where, "reason": reason})
         blended = [b for b in blended if not any(b is x for x, _ in failed)]
-    t_solve = time.perf_counter()
-    solid = assemble(shape, result, blended, fillet_faces, where_all) if blended else (
-        result.Solids[0] if len(result.Solids) == 1 else result)
     t_assemble = time.perf_counter()
     faces = [(b, _find_face(solid, b)) for b in blended]
     checks = _trimline_checks(solid, faces)
