@@ -89,8 +89,9 @@ class RollingBallFace:
             else:  # an end face, or another fillet met at an angle (a mitre)
                 self.ends.append((e, nb))
         if self.corner is None and len(self.contacts) != 2:
-            self.corner = ("it has %d tangent contact edges instead of 2 (a corner patch, "
-                           "or a fillet that uses up a whole face)" % len(self.contacts))
+            self.corner = ("it has %d tangent contact edges instead of 2 (a corner "
+                           "patch, or a fillet that uses up a whole face)"
+                           % len(self.contacts))
         if self.corner is None:
             self.corner = next(("it meets another fillet along a contact edge (a corner patch)"
                                 for e, _ in self.links if any(e.isSame(c) for c, _ in self.contacts)), None)
