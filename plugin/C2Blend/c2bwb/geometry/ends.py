@@ -116,10 +116,11 @@ def _newton(f, x, scale, what):
     raise ValueError("Newton's method for %s did not converge" % what)
 
 
-def cut_edge(surface, tool_face, near, touch=None):
+def cut_edge(surface, scale, tool_face, near, touch=None):
     """The curve where a blend `surface` (u across, v along) crosses the surface T of
-    `tool_face`, as an edge: at CUT_NODES + 1 values of u, Newton's method on
-    S(u, v) = T(s, t) for (v, s, t), marching across. It starts at the point of the
+    `tool_face`, as an edge (scale: the blend's size, for Newton's stopping test): at
+    CUT_NODES + 1 values of u, Newton's method on S(u, v) = T(s, t) for (v, s, t),
+    marching across. It starts at the point of the
     edges `near` (OCCT's fillet edges where the rolling ball met the tool, close to the
     cut) nearest to the start side. The points are interpolated by a C2 B-spline in u.
     touch: None, or (u side, tool's u side) where the two surfaces are tangent (a
@@ -128,7 +129,6 @@ def cut_edge(surface, tool_face, near, touch=None):
     the curve from either surface between the nodes). Raises ValueError saying why it
     cannot."""
     tool = tool_face.Surface
-    scale = Part.Face(surface).BoundBox.DiagonalLength
     guesses = [surface.parameter(p) for e in near for p in e.discretize(Number=8)]
     if not guesses:
         raise ValueError("OCCT's fillet has no edge there to start from")
@@ -205,11 +205,11 @@ def trim(blends, original_face):
                 partner = None if k is None else todo[k]
                 try:
                     if partner is None:
-                        edge, off = cut_edge(b.surface, _tool(original_face(f)),
-                                             e.edges_on(f))
+                        edge, off = cut_edge(b.surface, b.surface_diag,
+                                             _tool(original_face(f)), e.edges_on(f))
                     else:
-                        edge, off = cut_edge(b.surface, partner.full_face, e.edges_on(f),
-                                             _touch(b, partner))
+                        edge, off = cut_edge(b.surface, b.surface_diag, partner.full_face,
+                                             e.edges_on(f), _touch(b, partner))
                     if off > tol:
                         raise ValueError("its cut curve is %.1e off the surfaces" % off)
                 except ValueError as ex:

@@ -180,7 +180,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     try:
         surface, fit = fit_surface(blend, tol_rel, where)
     except C2BlendError as ex:  # the B-spline fit's limits, not the user's input
-        raise NotReplaced(str(ex).split(": ", 1)[-1]) from None
+        raise NotReplaced(ex.message) from None
     over = overshoot(surface, chain.sides, contact.signs)
     if over > ON_FACE * fit["tolerance"]:
         raise NotReplaced("the blend overshoots: it crosses the surface of a face it joins by "
