@@ -772,6 +772,21 @@ def test_ruled_face_edge():
     assert rep["blends"][0]["samples"] > 32
 
 
+@pytest.mark.parametrize("angle", [90.0, 135.0])
+def test_boss_on_a_loft_at_its_guide_knot(angle):
+    """OCCT's rolling-ball face around this boss is degree 14 with a knot of
+    multiplicity 14 (C0): its section plane turns there and the ball's centre jumps
+    1.7e-6 along the spine. Arc length integrated across that jump put the samples
+    unevenly, the boundary data stalled at 1.5e-7 (relative) and the fillet was G0
+    (normal angle 1.6e-8 and 1.9e-7 rad). The pieces between knots are now joined by
+    the measured jump: the data converge below the target 1e-8 and the result is G2."""
+    s, edges = shapes.loft_with_boss(angle)
+    solid, rep = C2Blend.fillet_report(s, edges, 1.5, label="Loft")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert rep["blends"][0]["data_error"] < 1e-8, rep["blends"][0]
+
+
 def test_boss_on_a_seam_is_kept():
     """A boss whose junction with a lofted face straddles that face's seam. OCCT's
     general fuse loses the face when it is cut along the blend's closed trimline, so the

@@ -21,6 +21,10 @@ whatever OCCT's approximation. The arc length is integrated by Gauss quadrature 
 guide's knot spans (the speed |dc/da| is analytic inside each span):
 
     |dc/da| = (m' . t0 - (c - m) . t0') / (t . t0),   t = unit spine tangent ~ N1 x N2.
+
+Where the guide is only C0 (a knot of full multiplicity, or the joint between two faces
+of a chain) its plane turns and the centre jumps along the spine; the spans are joined
+by the measured jump, so the samples stay uniform on the spine itself.
 """
 import bisect
 
@@ -75,6 +79,16 @@ def _extended(sections, extend):
     return out
 
 
+class _Piece:
+    """A stretch of one section between knots of its guide: k (the section), nodes
+    [(a, spine arc length from the piece's start)] at its Gauss subintervals' ends,
+    length, and start (arc length from the chain's start, set by Contact._join)."""
+
+    def __init__(self, k, nodes):
+        self.k, self.nodes, self.length = k, nodes, nodes[-1][1]
+        self.start, self.c_end, self.t_end = 0.0, None, None
+
+
 class Contact:
     """Exact contact of a ball of radius R rolling on a FilletChain's two sides.
 
@@ -90,9 +104,10 @@ class Contact:
         self.sections = _extended(chain.sections, extend)
         self.signs = None
         self.solved = [([], []) for _ in self.sections]  # per section: sorted a, solutions
-        self.cache = {}  # (section, arc length) -> contact, shared by pairs(n) and pairs(2n)
-        self.tables = [self._table(k) for k in range(len(self.sections))]
-        self.length = sum(t[-1][1] for t in self.tables)
+        self.cache = {}  # arc length -> contact, shared by pairs(n) and pairs(2n)
+        self.pieces = [p for k in range(len(self.sections)) for p in self._pieces(k)]
+        self.length = self._join(self.pieces, chain.closed)
+        self.starts = [p.start for p in self.pieces]
 
     def _guess(self, sec, a):
         q1, q2 = sec.rbf.point(a, sec.c1), sec.rbf.point(a, sec.c2)
@@ -129,7 +144,18 @@ class Contact:
         dl = d1.Length
         t0 = d1 * (1.0 / dl)
         t0p = (d2 - t0 * t0.dot(d2)) * (1.0 / dl)
-        x = self._warm(k, a)
+        p1, p2, c, t, x = self._newton(self._warm(k, a), m, t0)
+        keys, xs = self.solved[k]
+        i = bisect.bisect_left(keys, a)
+        keys.insert(i, a)
+        xs.insert(i, x)
+        speed = (d1.dot(t0) - (c - m).dot(t0p)) / t.dot(t0)
+        return p1, p2, c, t, (speed if sec.a_end >= sec.a_start else -speed), x
+
+    def _newton(self, x, m, t0):
+        """The contact whose ball centre c lies in the plane (c - m) . t0 = 0, by
+        Newton's method from x = (u1, v1, u2, v2): (p1, p2, c, t, x), t the unit spine
+        tangent oriented like t0."""
         if self.signs is None:
             self.signs = self._signs(x)
         g1, g2 = self.signs
@@ -152,10 +178,6 @@ class Contact:
         else:
             raise ContactError("Newton's method for the exact rolling-ball contact did not "
                                "converge near (%.6g, %.6g, %.6g)" % (m.x, m.y, m.z))
-        keys, xs = self.solved[k]
-        i = bisect.bisect_left(keys, a)
-        keys.insert(i, a)
-        xs.insert(i, x)
         p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1])
         p2 = self.f2.Surface.value(x[2], x[3])
         c = p1 + n1 * g1
@@ -164,69 +186,98 @@ class Contact:
             raise ContactError("the faces are parallel at the contact near (%.6g, %.6g, %.6g)"
                                % (c.x, c.y, c.z))
         t.normalize()
-        if t.dot(t0) < 0.0:
-            t = -t
-        speed = (d1.dot(t0) - (c - m).dot(t0p)) / t.dot(t0)
-        return p1, p2, c, t, (speed if sec.a_end >= sec.a_start else -speed), x
+        return p1, p2, c, (-t if t.dot(t0) < 0.0 else t), x
 
     def _integral(self, k, a0, a1):
         """Spine arc length from guide parameter a0 to a1 in section k (Gauss)."""
         return (a1 - a0) * sum(w * self.solve(k, a0 + (a1 - a0) * x)[4] for x, w in _GL)
 
-    def _table(self, k):
-        """[(a, arc length from the section's start)] at the subinterval ends."""
+    def _pieces(self, k):
+        """Section k cut at the interior knots of its guide: [Piece]. OCCT's fillet
+        surfaces are only C0 or C1 at some knots (degree 14, multiplicity 14 on a boss
+        on a loft), where the guide's section plane turns: the ball's centre then jumps
+        along the spine (by 1.7e-6 there), so arc length is integrated per piece and
+        the pieces are joined by their measured gaps (_join)."""
         sec = self.sections[k]
         s = sec.rbf.face.Surface
         knots = getattr(s, "getUKnots" if sec.rbf.along == 0 else "getVKnots", list)()
         lo, hi = sorted((sec.a_start, sec.a_end))
         spans = sorted(set([lo, hi] + [q for q in knots if lo < q < hi]))
         per = max(SUB_PER_SPAN, -(-MIN_SUB // (len(spans) - 1)))
-        pts = [a + (b - a) * i / per for a, b in zip(spans, spans[1:]) for i in range(per)]
-        pts.append(hi)
+        spans = list(zip(spans, spans[1:]))
         if sec.a_end < sec.a_start:
-            pts.reverse()
-        table = [(pts[0], 0.0)]
-        for a0, a1 in zip(pts, pts[1:]):
-            table.append((a1, table[-1][1] + self._integral(k, a0, a1)))
-        return table
+            spans = [(b, a) for a, b in reversed(spans)]
+        out = []
+        for a, b in spans:
+            nodes = [(a, 0.0)]
+            for i in range(per):
+                a0, a1 = a + (b - a) * i / per, a + (b - a) * (i + 1) / per
+                nodes.append((a1, nodes[-1][1] + self._integral(k, a0, a1)))
+            out.append(_Piece(k, nodes))
+        return out
 
-    def at_length(self, k, s):
-        """The contact at spine arc length s from the start of section k (Newton on the
-        Gauss arc length, so the samples are a smooth function of s)."""
-        if (k, s) not in self.cache:
-            self.cache[(k, s)] = self._at_length(k, s)
-        return self.cache[(k, s)]
+    def _end(self, piece, at_end):
+        """(c, t): the ball's centre and spine tangent at the start or end of a piece,
+        from its own side of a knot (evaluated 1e-7 of the span inside, moved back
+        along the spine by speed times that offset)."""
+        (a0, _), (a1, _) = piece.nodes[0], piece.nodes[-1]
+        end, inward = (a1, a0 - a1) if at_end else (a0, a1 - a0)
+        _, _, c, t, speed, _ = self.solve(piece.k, end + 1e-7 * inward)
+        return c + t * ((1e-7 if at_end else -1e-7) * abs(inward) * speed), t
 
-    def _at_length(self, k, s):
-        table = self.tables[k]
-        lengths = [q[1] for q in table]
-        i = min(max(bisect.bisect_right(lengths, s) - 1, 0), len(table) - 2)
-        (a0, l0), (a1, l1) = table[i], table[i + 1]
+    def _join(self, pieces, closed):
+        """Set each piece's start (spine arc length) and return the whole length (a
+        closed spine's up to where it returns to its start): a piece starts where the
+        previous one ends plus the gap (c_start - c_end) . t_end between them, which
+        OCCT's faces leave at knots and between the faces of a chain and a closed face's
+        ends. A sample that falls in a gap (a positive one) is solved in the plane
+        across the spine at that arc length (at_length)."""
+        acc = 0.0
+        for i, piece in enumerate(pieces):
+            piece.start = acc
+            acc += piece.length
+            if i + 1 < len(pieces) or closed:
+                piece.c_end, piece.t_end = self._end(piece, True)
+                c_next, _ = self._end(pieces[(i + 1) % len(pieces)], False)
+                acc += (c_next - piece.c_end).dot(piece.t_end)
+        return acc
+
+    def at_length(self, s):
+        """The contact at spine arc length s from the chain's start (see _pieces)."""
+        if s not in self.cache:
+            self.cache[s] = self._at_length(s)
+        return self.cache[s]
+
+    def _at_length(self, s):
+        i = max(bisect.bisect_right(self.starts, s) - 1, 0)
+        piece = self.pieces[i]
+        if s > piece.start + piece.length and i + 1 < len(self.pieces) + self.chain.closed:
+            # in the gap after this piece: in the plane across the spine at s
+            m = piece.c_end + piece.t_end * (s - piece.start - piece.length)
+            x = self._warm(piece.k, piece.nodes[-1][0])
+            return self._newton(x, m, piece.t_end)
+        k, s = piece.k, min(max(s - piece.start, 0.0), piece.length)
+        lengths = [q[1] for q in piece.nodes]
+        j = min(max(bisect.bisect_right(lengths, s) - 1, 0), len(lengths) - 2)
+        (a0, l0), (a1, l1) = piece.nodes[j], piece.nodes[j + 1]
         a = a0 + (a1 - a0) * (s - l0) / (l1 - l0)
         for _ in range(MAX_NEWTON):
             step = (l0 + self._integral(k, a0, a) - s) / self.solve(k, a)[4]
             a -= step
             if abs(step) <= NEWTON_DONE * (1.0 + abs(a)):
                 break
-        return self.solve(k, a)
+        p1, p2, c, t, _, x = self.solve(k, a)
+        return p1, p2, c, t, x
 
     def pairs(self, n):
         """n samples uniform in spine arc length (the end point excluded on a closed
         chain): (frame1, t, p2 - p1, frame2, t, p1 - p2) each, with the sides' frames
         at the contact points, as trimlines.pair_rows takes them. The cross direction on
         each face is then t x N, in the ball's plane."""
-        closed = self.chain.closed
-        span = self.length / (n if closed else n - 1)
-        out, acc, j = [], 0.0, 0
-        for k, table in enumerate(self.tables):
-            total, last = table[-1][1], k == len(self.tables) - 1
-            while j < n:
-                s = j * span - acc
-                if s > total and not last:
-                    break
-                p1, p2, _, t, _, x = self.at_length(k, min(s, total))
-                out.append((Frame(self.f1, x[0], x[1]), t, p2 - p1,
-                            Frame(self.f2, x[2], x[3]), t, p1 - p2))
-                j += 1
-            acc += total
+        span = self.length / (n if self.chain.closed else n - 1)
+        out = []
+        for j in range(n):
+            p1, p2, _, t, x = self.at_length(min(j * span, self.length))
+            out.append((Frame(self.f1, x[0], x[1]), t, p2 - p1,
+                        Frame(self.f2, x[2], x[3]), t, p1 - p2))
         return out
