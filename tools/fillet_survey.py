@@ -80,10 +80,9 @@ def parts():
     out.append(("box edge ending on a 30 degree slanted top", w,
                 names(w, lambda e: e.BoundBox.XMax < 1e-9 and e.BoundBox.YMax < 1e-9
                       and e.BoundBox.ZLength > 1), 2.0))
-    cb = Part.makeBox(20, 10, 10).fuse(Part.makeCylinder(8, 10, V(20, 5, 0))).removeSplitter()
-    out.append(("box edge ending on a cylinder", cb,
-                names(cb, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
-                      and abs(e.BoundBox.YMax) < 1e-9), 1.0))
+    for bulge in ("cylinder", "sphere"):
+        bx, edge = shapes.box_into(bulge)
+        out.append(("box edge ending on a %s bulging out" % bulge, bx, [edge], 1.0))
     cc = Part.makeBox(30, 10, 10).cut(Part.makeCylinder(15, 10, V(40, 5, 0)))
     out.append(("box edge ending on a concave cylinder", cc,
                 names(cc, lambda e: curve_is(e, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
@@ -96,6 +95,15 @@ def parts():
     out.append(("step, concave and convex edges", st, [concave, convex], 2.0))
     rb, arc = shapes.ruled_block()
     out.append(("ruled B-spline face / plane (arc edge)", rb, [arc], 1.5))
+    for axis in ("z", "x"):
+        sb, inner = shapes.slanted_l_bracket(axis)
+        out.append(("L bracket, inner edge, end tilted 20 degrees about %s" % axis, sb,
+                    [inner], 2.0))
+    wc, edge = shapes.wall_into_cylinder()
+    out.append(("concave wall/plate edge running into a cylinder", wc, [edge], 2.0))
+    for angle in (90.0, 135.0):
+        lb, edges = shapes.loft_with_boss(angle)
+        out.append(("boss on a loft, %g degrees from its seam" % angle, lb, edges, 1.5))
     return out
 
 

@@ -78,6 +78,50 @@ def l_bracket():
     return (s, *names)
 
 
+def slanted_l_bracket(axis):
+    """The l_bracket with its end y = 30 replaced by a plane tilted 20 degrees about the
+    z axis (y = 30 - x tan 20) or the x axis (y = 30 - z tan 20) through (0, 30, 0);
+    returns (solid, name of the inner corner edge at x = z = 5)."""
+    s, _, _ = l_bracket()
+    cutter = Part.makeBox(200, 100, 200, V(-100, 30, -100))
+    cutter.rotate(V(0, 30, 0), V(0, 0, 1) if axis == "z" else V(-1, 0, 0), -20)
+    s = s.cut(cutter)
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if max(abs(e.BoundBox.XMin - 5), abs(e.BoundBox.XMax - 5),
+                    abs(e.BoundBox.ZMin - 5), abs(e.BoundBox.ZMax - 5)) < 1e-9]
+    assert len(names) == 1, names
+    return s, names[0]
+
+
+def wall_into_cylinder():
+    """A 40 x 30 x 5 plate with a 5 mm wall (x in [0, 5], 20 high) along y, ending in a
+    cylinder r = 6 (axis x = 5, y = 30, from z = 5 to 25); returns (solid, name of the
+    concave edge at x = z = 5 between the wall and the plate, which runs into the
+    cylinder)."""
+    s = Part.makeBox(40, 30, 5).fuse(Part.makeBox(5, 30, 20, V(0, 0, 5))).fuse(
+        Part.makeCylinder(6, 20, V(5, 30, 5))).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if max(abs(e.BoundBox.XMin - 5), abs(e.BoundBox.XMax - 5),
+                    abs(e.BoundBox.ZMin - 5), abs(e.BoundBox.ZMax - 5)) < 1e-9
+             and e.BoundBox.YLength > 1]
+    assert len(names) == 1, names
+    return s, names[0]
+
+
+def box_into(bulge):
+    """A 20 x 10 x 10 box fused with a cylinder r = 8 (axis x = 20, y = 5, z in [0, 10])
+    or a sphere r = 8 (centre (20, 5, 5)) bulging out of its front; returns (solid, name
+    of the top front edge y = 0, z = 10, which ends on the bulge)."""
+    other = Part.makeCylinder(8, 10, V(20, 5, 0)) if bulge == "cylinder" \
+        else Part.makeSphere(8, V(20, 5, 5))
+    s = Part.makeBox(20, 10, 10).fuse(other).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if not e.Degenerated
+             and abs(e.BoundBox.ZMin - 10) < 1e-9 and abs(e.BoundBox.ZMax - 10) < 1e-9
+             and abs(e.BoundBox.YMax) < 1e-9]
+    assert len(names) == 1, names
+    return s, names[0]
+
+
 def step():
     """A 30 x 20 x 10 block with a 15 x 20 x 10 block on its left half; returns (solid,
     name of the concave edge at x = 15, z = 10, name of the convex edge at x = 15,

@@ -247,20 +247,113 @@ def test_curved_end_face():
     assert len(on_cylinder) == 1
 
 
-def test_end_face_extended_by_occt_is_kept():
-    """A box edge that ends where a cylinder bulges out of the box's front: OCCT ends
-    its fillet on a part of the cylinder's surface that is inside the original solid
-    (it adds that face part). The blend cannot be joined to the original face there,
-    so OCCT's face is kept, with that reason, and the verdict is G1."""
-    cb = Part.makeBox(20, 10, 10).fuse(Part.makeCylinder(8, 10, V(20, 5, 0))).removeSplitter()
-    edge = next("Edge%d" % (i + 1) for i, e in enumerate(cb.Edges)
-                if isinstance(e.Curve, Part.Line) and abs(e.BoundBox.ZMin - 10) < 1e-9
-                and abs(e.BoundBox.YMax) < 1e-9)
+def _quintic_integral(big_f, radius=1.0):
+    """|int F(a) b' du| along the blend's cross-section of a straight 90 degree edge
+    between two planes (the quintic of _corner_area, tension 1): a(u) = R h0(u) -
+    s h1(u), b(u) = a(1 - u), s = R sqrt 2, in coordinates a, b along the two faces from
+    the corner. By Green's theorem this is the integral over the corner region (between
+    the corner and the cross-section) of f = F', for F(0) = 0 (the legs a = 0 and b = 0
+    add nothing). 40-point Gauss-Legendre: the integrand is smooth."""
+    import numpy as np
+    s2 = radius * math.sqrt(2.0)
+
+    def da(u):
+        return (radius * (-30 * u**2 + 60 * u**3 - 30 * u**4)
+                - s2 * (1 - 18 * u**2 + 32 * u**3 - 15 * u**4))
+
+    def a_of(u):
+        return (radius * (1 - 10 * u**3 + 15 * u**4 - 6 * u**5)
+                - s2 * (u - 6 * u**3 + 8 * u**4 - 3 * u**5))
+
+    xs, ws = np.polynomial.legendre.leggauss(40)
+    return abs(sum(0.5 * w * big_f(a_of(u)) * -da(1.0 - u)
+                   for u, w in zip(0.5 * (xs + 1.0), ws)))
+
+
+def test_quintic_integral_gives_the_corner_area():
+    """The two independent closed forms of the corner region's area agree."""
+    assert abs(_quintic_integral(lambda a: a, 2.0) - _corner_area(2.0)) < 1e-13
+
+
+def test_edge_ending_on_a_bulging_cylinder():
+    """A box edge (y = 0, z = 10) that ends where a cylinder (r = 8, axis x = 20, y = 5)
+    bulges out of the box's front. The fillet uncovers part of the cylinder's surface
+    that was inside the solid, so the cylinder's face grows by that region and the top
+    face loses the strip up to the cylinder (it was kept as OCCT's G1 face before).
+    Closed forms, in the plane x = const (a = y along the top, b = 10 - z down the
+    front; the cylinder is x_c(a) = 20 - sqrt(64 - (5 - a)^2)), by _quintic_integral:
+    removed volume with F(a) = int_0^a x_c, the cylinder's growth with
+    F(a) = int_0^a sqrt(1 + x_c'^2) = 8 (asin 5/8 - asin((5 - a)/8)); the top face loses
+    F(1) = int_0^1 x_c. The input shape is left as it was."""
+    cb, edge = shapes.box_into("cylinder")
+    brep = cb.exportBrepToString()
     solid, rep = C2Blend.fillet_report(cb, [edge], 1.0, label="Boss")
     assert_valid(solid)
-    assert not rep["blends"] and rep["verdict"] == "G1"
-    assert "not on the original solid's face" in rep["kept_occt_faces"][0]["reason"]
-    assert rep["kept_occt_faces"][0]["where"] == "Boss." + edge
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    assert cb.exportBrepToString() == brep
+
+    def g(w):  # int sqrt(64 - w^2) dw
+        return 0.5 * (w * math.sqrt(64.0 - w * w) + 64.0 * math.asin(w / 8.0))
+
+    def big_f(a):
+        return 20.0 * a - (g(5.0) - g(5.0 - a))
+
+    volume = _quintic_integral(big_f)
+    growth = _quintic_integral(lambda a: 8.0 * (math.asin(5.0 / 8.0)
+                                                - math.asin((5.0 - a) / 8.0)))
+    assert abs(volume - _corner_area(1.0) * 13.4) < 0.05  # between x_c(1) and x_c(0)
+    assert abs(solid.Volume - (cb.Volume - volume)) < 1e-6
+    (cyl,) = [f for f in solid.Faces if isinstance(f.Surface, Part.Cylinder)]
+    (cyl0,) = [f for f in cb.Faces if isinstance(f.Surface, Part.Cylinder)]
+    assert abs(cyl.Area - (cyl0.Area + growth)) < 1e-6
+    top = _planar_faces_on(solid, "z", 10.0)
+    top0 = _planar_faces_on(cb, "z", 10.0)
+    assert len(top) == 1 and abs(top[0].Area - (top0[0].Area - big_f(1.0))) < 1e-6
+
+
+@pytest.mark.parametrize("axis", ["z", "x"])
+def test_concave_edge_ending_on_a_slanted_face(axis):
+    """The L bracket's inner (concave) edge, x = z = 5, ending on a plane tilted 20
+    degrees: y = 30 - x tan 20 (axis z) or y = 30 - z tan 20 (axis x). The blend is traced
+    past it and cut back, and the slanted face grows by the corner region seen on it
+    (it was kept as OCCT's G1 face before). Closed forms (a = x - 5, b = z - 5, the
+    corner region's area A and first moment M = int a dA = int b dA by symmetry, both
+    by _quintic_integral): the volume grows by 30 A - tan 20 (5 A + M), the slanted face
+    by A / cos 20."""
+    s, inner = shapes.slanted_l_bracket(axis)
+    solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    a = _quintic_integral(lambda q: q, 2.0)
+    m = _quintic_integral(lambda q: 0.5 * q * q, 2.0)
+    tan = math.tan(math.radians(20.0))
+    assert abs(solid.Volume - (s.Volume + 30.0 * a - tan * (5.0 * a + m))) < 1e-6
+    slanted = [f for f in solid.Faces if f.Surface.isPlanar()
+               and 0.1 < abs(f.Surface.Axis.y) < 0.99999]
+    slanted0 = [f for f in s.Faces if f.Surface.isPlanar()
+                and 0.1 < abs(f.Surface.Axis.y) < 0.99999]
+    assert len(slanted) == 1 and len(slanted0) == 1
+    assert abs(slanted[0].Area - (slanted0[0].Area + a / math.cos(math.radians(20.0)))) < 1e-6
+
+
+def test_concave_edge_ending_on_a_cylinder():
+    """The concave edge between a plate and a wall (x = z = 5, along y) runs into a
+    cylinder r = 6 about the vertical axis x = 5, y = 30. The added material at (x, z)
+    of the corner region reaches y_c = 30 - sqrt(36 - a^2), a = x - 5, so by
+    _quintic_integral the volume grows by int F(a) b' du with
+    F(a) = int_0^a y_c = 30 a - (a sqrt(36 - a^2) + 36 asin(a / 6)) / 2; the cylinder's
+    face is one face, and the fillet is G2 (it was kept as OCCT's G1 face before)."""
+    s, edge = shapes.wall_into_cylinder()
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Wall")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    added = _quintic_integral(lambda a: 30.0 * a - 0.5 * (a * math.sqrt(36.0 - a * a)
+                                                          + 36.0 * math.asin(a / 6.0)), 2.0)
+    assert abs(solid.Volume - (s.Volume + added)) < 1e-6
+    assert len([f for f in solid.Faces if isinstance(f.Surface, Part.Cylinder)]) == 1
 
 
 def test_uncut_mitre_keeps_both_fillets(monkeypatch):
@@ -496,7 +589,7 @@ def test_failed_sewing_is_reported(monkeypatch):
     box = shapes.box()
     # fault injection: the faces the blend touches are lost when they are cut along its
     # boundary, so the faces cannot be sewn into a closed shell
-    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, tol: [])
+    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, corners, tol: [])
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: sewing the blend faces .* failed"):
         C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
 

@@ -145,25 +145,12 @@ class Blended:
 
 
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
-               max_samples, fillet_faces, original):
+               max_samples, fillet_faces):
     """The PDE blend replacing one rolling-ball chain (see bspline.solve_sampled), from
     the exact contact of the ball of `radius`, traced past the ends that are trimmed
-    (ends.py). original(result face) is the face of the original solid it lies on.
-    Raises NotReplaced saying why it cannot."""
+    (ends.py). Raises NotReplaced saying why it cannot."""
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces)
-    for end in at_ends:
-        for end_edge, face in end.edges:
-            if any(face.isSame(f) for f in fillet_faces) or _on_face(
-                    original(face), _midpoint(end_edge), 10.0 * max(end_edge.Tolerance, 1e-7)):
-                continue
-            if not end.across:  # a concave fillet ending on a slanted or curved face
-                raise NotReplaced("OCCT's fillet ends on a part of its end face that is not "
-                                  "on the original solid's face (OCCT extends that face), "
-                                  "and that face is not a plane across the fillet; the blend "
-                                  "cannot be joined to the original face there")
-            # a concave fillet ending on a plane across it: the end face grows by the
-            # region between the corner and the blend's end section (assemble)
     try:
         contact = Contact(chain, radius, ends.extension(at_ends, radius))
         blend, n, err = solve_sampled(
@@ -256,30 +243,42 @@ def _original(shape, face):
     return min(on, key=lambda g: g.distToShape(probe)[0])
 
 
+def _leg(curve, p, corner, tol):
+    """The edge of `curve` from point p to point `corner` (both on it within tol; on a
+    periodic curve the shorter way round), or None when p is not on the curve."""
+    a, b = curve.parameter(p), curve.parameter(corner)
+    if (curve.value(a) - p).Length > tol or (curve.value(b) - corner).Length > tol:
+        return None
+    lo, hi = min(a, b), max(a, b)
+    if curve.isPeriodic() and hi - lo > 0.5 * curve.period():
+        lo, hi = hi, lo + curve.period()
+    return Part.Edge(curve, lo, hi)
+
+
 def _growth(face, edge, tol):
-    """The planar region by which a concave fillet extends `face` (a plane): bounded by
-    `edge` (the fillet's end section, on the face's plane, outside the face) and the
-    parts of the two edges of the face that run from its ends to the corner vertex they
-    share. Returns (region face, corner point), or None when edge does not span such a
-    corner."""
+    """The region by which a fillet's end extends `face`: a concave fillet adds
+    material, a convex one ending on a face that bulges out (a box edge ending on a
+    cylinder) uncovers some. The region lies on the face's surface, bounded by `edge`
+    (the blend's end section, on that surface outside the face) and two legs from its
+    ends to a vertex of the face (the corner), along the curves of the face's edges
+    there, extended past them where needed. Returns (region face, corner point, legs),
+    or None when edge does not span such a corner."""
     ends = [v.Point for v in edge.Vertexes]
     if len(ends) != 2:
         return None
     for corner in face.Vertexes:
-        at = [e for e in face.Edges if any(corner.isSame(v) for v in e.Vertexes)]
-        legs = []
-        for p in ends:
-            e = next((e for e in at if e.distToShape(Part.Vertex(p))[0] <= tol), None)
-            if e is None:
-                break
-            c = e.Curve
-            a, b = c.parameter(p), c.parameter(corner.Point)
-            legs.append(Part.Edge(c, min(a, b), max(a, b)))
-        if len(legs) == 2:
-            region = Part.Face(Part.Wire(Part.__sortEdges__([edge] + legs)))
-            if region.normalAt(0, 0).dot(face.normalAt(0, 0)) < 0:
-                region.reverse()  # oriented like face, so the two merge into one
-            return region, corner.Point
+        at = [e for e in face.Edges
+              if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
+        legs = [next((g for g in (_leg(e.Curve, p, corner.Point, tol) for e in at)
+                      if g is not None), None) for p in ends]
+        if None in legs:
+            continue
+        region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
+        region.validate()
+        uv = [g.Surface.parameter(corner.Point) for g in (region, face)]
+        if region.normalAt(*uv[0]).dot(face.normalAt(*uv[1])) < 0:
+            region.reverse()  # oriented like face, so the two merge into one
+        return region, corner.Point, legs
     return None
 
 
@@ -312,15 +311,26 @@ def _consumed(edge, boundary, tol):
                for x in (0.5, 1e-3, 1.0 - 1e-3))
 
 
-def _cut_face(face, tools, sharp, tol):
+def _cut_face(face, tools, sharp, corners, tol):
     """The pieces of an original face, cut along the edges `tools` lying on it, that do
-    not touch any of the `sharp` edges the fillets consumed."""
+    not touch any of the `sharp` edges the fillets consumed, except at `corners` (points
+    where fillets end and the face grows from: _growth)."""
+    face = face.copy()  # OCCT may rewrite shared pcurves: leave the input shape alone
     pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
     if abs(sum(f.Area for f in pieces) - face.Area) > 1e-3 * face.Area:  # areas: ~1e-6
         raise ValueError("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
                          "trimline crosses the face's seam" % (sum(f.Area for f in pieces),
                                                                 face.Area))
-    return [f for f in pieces if all(f.distToShape(e)[0] > tol for e in sharp)]
+
+    def touches(piece, edge):
+        if piece.distToShape(edge)[0] > tol:
+            return False
+        a, b = edge.FirstParameter, edge.LastParameter
+        pts = [edge.valueAt(a + x * (b - a)) for x in (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)]
+        return any(piece.distToShape(Part.Vertex(p))[0] <= tol
+                   and all((p - c).Length > tol for c in corners) for p in pts)
+
+    return [f for f in pieces if not any(touches(f, e) for e in sharp)]
 
 
 def _update_tolerances(solid, faces):
@@ -346,6 +356,29 @@ def _update_tolerances(solid, faces):
                 e.fixTolerance(2.0 * worst)
 
 
+class _Touched:
+    """A face of the original solid that blends touch: orig; tools: the edges lying on
+    its surface that bound it anew (blend edges, kept OCCT fillets' edges, legs of
+    neighbours' growth regions); inside: those lying on the face itself; grown: the
+    regions it grows by (_growth); corners: vertices the fillets end at, which it
+    keeps; owners: the blends concerned."""
+
+    def __init__(self, orig):
+        self.orig, self.tools, self.inside, self.grown, self.corners = orig, [], [], [], []
+        self.owners = []
+
+    @staticmethod
+    def of(touched, orig, blend):
+        """The entry of `touched` for face orig (added if new), with blend an owner."""
+        t = next((x for x in touched if x.orig.isSame(orig)), None)
+        if t is None:
+            t = _Touched(orig)
+            touched.append(t)
+        if not any(blend is x for x in t.owners):
+            t.owners.append(blend)
+        return t
+
+
 def assemble(shape, result, blended, fillet_faces, where):
     """The solid: the faces of `result` (OCCT's fillet of `shape`) with the replaced
     rolling-ball faces dropped, the blend faces added, and every face of `shape` that a
@@ -357,7 +390,7 @@ def assemble(shape, result, blended, fillet_faces, where):
     kept_fillets = [f for f in fillet_faces if not any(f.isSame(d) for d in drop)]
     faces_out = [b.face for b in blended]
     # the original faces the blends touch, with the blend's edges lying on each
-    touched = []  # [(original face, [tool edges], [blends they come from])]
+    touched = []
     for b in blended:
         near = list(b.chain.sides) + [f for e in b.ends for f in e.faces
                                       if not any(f.isSame(g) for g in e.fillets)]
@@ -365,43 +398,53 @@ def assemble(shape, result, blended, fillet_faces, where):
             res_face = _face_under(edge, near, ON_FACE * b.fit["tolerance"])
             if res_face is None:
                 continue  # a mitre, shared with another blend
-            orig = _original(shape, res_face)
-            entry = next((t for t in touched if t[0].isSame(orig)), None)
-            if entry is None:
-                entry = (orig, [], [])
-                touched.append(entry)
-            entry[1].append(edge)
-            if not any(b is x for x in entry[2]):
-                entry[2].append(b)
+            _Touched.of(touched, _original(shape, res_face), b).tools.append(edge)
+    for t in list(touched):
+        # edges of OCCT fillets kept on this face bound it too
+        t.tools += [e for k in kept_fillets for e in k.Edges
+                    if _face_under(e, [t.orig], tol) is not None]
+        t.inside += [e for e in t.tools if _edge_on_face(e, t.orig, tol)]
+        for e in t.tools:
+            if any(e is x for x in t.inside):
+                continue
+            g = _growth(t.orig, e, tol)
+            if g is None:
+                raise Unassembled(t.owners, "an end of its blend leaves face %s of the "
+                                  "original solid away from the face's corners"
+                                  % ck.element_name(shape, t.orig, "Face"))
+            t.grown.append(g[0])
+            t.corners.append(g[1])
+            for leg in g[2]:  # a leg beyond the face's edges cuts the face it crosses
+                if any(_edge_on_face(leg, x, tol) for x in t.orig.Edges):
+                    continue
+                other = next((f for f in shape.Faces if not f.isSame(t.orig)
+                              and _edge_on_face(leg, f, tol)), None)
+                if other is None:
+                    raise Unassembled(t.owners, "the region by which its blend's end "
+                                      "extends face %s is not bounded by the solid's faces"
+                                      % ck.element_name(shape, t.orig, "Face"))
+                o = _Touched.of(touched, other, t.owners[0])
+                o.tools.append(leg)
+                o.inside.append(leg)
+                o.corners.append(g[1])
     boundary = Part.Compound(result.Faces)
     sharp = [e for e in shape.Edges if not any(e.isSame(r) for r in result.Edges)
              and _consumed(e, boundary, tol)]
-    for orig, tools, owners in touched:
-        # edges of OCCT fillets kept on this face bound it too
-        tools += [e for k in kept_fillets for e in k.Edges
-                  if _face_under(e, [orig], tol) is not None]
-        inside = [e for e in tools if _edge_on_face(e, orig, tol)]
+    for t in touched:
         try:
-            grown = [g for g in (_growth(orig, e, tol) for e in tools
-                                 if orig.Surface.isPlanar() and not any(e is x for x in inside))
-                     if g is not None]
-            # the face keeps its corners where concave fillets end (they grow from there)
-            corners = [Part.Vertex(c) for _, c in grown]
-            pieces = _cut_face(orig, inside, [e for e in sharp if all(
-                e.distToShape(c)[0] > tol for c in corners)], tol)
-            if grown:  # concave fillets' end sections extend the face: one face again
-                regions = [g for g, _ in grown]
-                pieces = pieces[0].multiFuse(pieces[1:] + regions).removeSplitter().Faces
+            pieces = _cut_face(t.orig, t.inside, sharp, t.corners, tol)
+            if t.grown:  # the fillets' end sections extend the face: one face again
+                pieces = pieces[0].multiFuse(pieces[1:] + t.grown).removeSplitter().Faces
         except Exception as ex:
-            raise Unassembled(owners, "face %s of the original solid cannot be cut along "
-                              "its blend (%s)" % (ck.element_name(shape, orig, "Face"),
+            raise Unassembled(t.owners, "face %s of the original solid cannot be cut along "
+                              "its blend (%s)" % (ck.element_name(shape, t.orig, "Face"),
                                                   str(ex) or type(ex).__name__)) from None
         faces_out += pieces
     for f in result.Faces:
         if any(f.isSame(d) for d in drop):
             continue
         if not any(f.isSame(k) for k in kept_fillets) and \
-                any(_on_face(orig, _probe(f), tol) for orig, _, _ in touched):
+                any(_on_face(t.orig, _probe(f), tol) for t in touched):
             continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
     sewn = Part.Compound(faces_out)
@@ -532,8 +575,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             continue
         try:
             blended.append(solve_face(chain, radius, where, continuity, shape_params, tension,
-                                      tol_rel, samples, max_samples, fillet_faces,
-                                      lambda f: _original(shape, f)))
+                                      tol_rel, samples, max_samples, fillet_faces))
         except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
     t_solve = None
