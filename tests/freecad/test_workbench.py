@@ -356,6 +356,19 @@ def test_concave_edge_ending_on_a_cylinder():
     assert len([f for f in solid.Faces if isinstance(f.Surface, Part.Cylinder)]) == 1
 
 
+def test_end_face_that_cannot_grow_keeps_occt_face(monkeypatch):
+    """Fault injection: no growth region can be built for the L bracket's inner edge's
+    end faces. OCCT's face is kept with the reason, the solid (OCCT's, with its own
+    grown end faces) is valid and the verdict is G1, never G2."""
+    monkeypatch.setattr(fl, "_growth", lambda face, edge, tol: None)
+    s, _, inner = shapes.l_bracket()
+    solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    assert "away from the face's corners" in rep["kept_occt_faces"][0]["reason"]
+    assert abs(solid.Volume - rep["occt_volume"]) < 1e-9 * solid.Volume
+
+
 def test_uncut_mitre_keeps_both_fillets(monkeypatch):
     """When a blend's extension cannot be cut back (here: an injected failure of the
     cut curve for the box's front top edge), OCCT's face is kept for it, and so is the
