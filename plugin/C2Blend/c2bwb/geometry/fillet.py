@@ -403,7 +403,8 @@ def assemble(shape, result, blended, fillet_faces, where):
         # edges of OCCT fillets kept on this face bound it too
         t.tools += [e for k in kept_fillets for e in k.Edges
                     if _face_under(e, [t.orig], tol) is not None]
-        t.inside += [e for e in t.tools if _edge_on_face(e, t.orig, tol)]
+        t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
+                     and _edge_on_face(e, t.orig, tol)]
         for e in t.tools:
             if any(e is x for x in t.inside):
                 continue
