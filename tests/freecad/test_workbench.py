@@ -893,6 +893,35 @@ def test_boss_on_a_loft_at_its_guide_knot(angle):
     assert rep["blends"][0]["data_error"] < 1e-8, rep["blends"][0]
 
 
+def test_sample_in_a_gap_between_guide_pieces():
+    """A sample whose arc length falls in a gap between two pieces of the guide (the
+    next piece's centre lies further along the spine than this one's end) is solved in
+    the plane across the spine at that arc length. The real gaps here are 1e-14 to
+    1e-11, too small to be hit, so the next piece is moved 1e-3 along: the centre
+    returned at 4e-4 into the gap must lie 4e-4 along the spine from the piece's end
+    (a chord that short is the arc to 1e-12) and at distance R from both faces
+    (projected onto them)."""
+    from c2bwb.geometry.contact import Contact
+    from c2bwb.geometry.rollingball import RollingBallFace, chains, new_faces
+    from c2bwb.geometry.surface import off_surface
+    s, edges = shapes.loft_with_boss(135.0)
+    res = s.makeFillet(1.5, [s.getElement(e) for e in edges])
+    ff = new_faces(s, res)
+    (chain,) = chains([RollingBallFace(res, f, ff) for f in ff])
+    con = Contact(chain, 1.5)
+    first = con.pieces[1]
+    for p in con.pieces[2:]:
+        p.start += 1e-3
+    con.starts = [p.start for p in con.pieces]
+    end = first.start + first.length
+    p1, p2, c, t, _ = con.at_length(end + 4e-4)
+    assert abs((c - first.c_end).Length - 4e-4) < 1e-12
+    assert abs((c - first.c_end).dot(first.t_end) - 4e-4) < 1e-12
+    for face, p in ((chain.sides[0], p1), (chain.sides[1], p2)):
+        assert abs(off_surface(face.Surface, c) - 1.5) < 1e-10
+        assert abs((c - p).Length - 1.5) < 1e-10
+
+
 def test_boss_on_a_seam_is_kept():
     """A boss whose junction with a lofted face straddles that face's seam. OCCT's
     general fuse loses the face when it is cut along the blend's closed trimline, so the
