@@ -122,6 +122,19 @@ def box_into(bulge):
     return s, names[0]
 
 
+def hex_prism():
+    """A regular hexagonal prism, circumradius 10 (sides 10), 20 high, its vertices at
+    angles k 60 degrees; returns (solid, names of its six top edges)."""
+    import math
+    pts = [V(10 * math.cos(math.pi * k / 3), 10 * math.sin(math.pi * k / 3), 0)
+           for k in range(6)]
+    s = Part.Face(Part.makePolygon(pts + [pts[0]])).extrude(V(0, 0, 20))
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if abs(e.BoundBox.ZMin - 20) < 1e-9 and abs(e.BoundBox.ZMax - 20) < 1e-9]
+    assert len(names) == 6, names
+    return s, names
+
+
 def step():
     """A 30 x 20 x 10 block with a 15 x 20 x 10 block on its left half; returns (solid,
     name of the concave edge at x = 15, z = 10, name of the convex edge at x = 15,

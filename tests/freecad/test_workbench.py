@@ -312,6 +312,25 @@ def test_edge_ending_on_a_bulging_cylinder():
     assert len(top) == 1 and abs(top[0].Area - (top0[0].Area - big_f(1.0))) < 1e-6
 
 
+def test_hexagonal_prism_top_edges():
+    """Each top edge of a regular hexagonal prism on its own (three of them failed to
+    sew: the 3 x 3 grid point chosen inside the hexagonal bottom face lay on its
+    boundary, on a side face too, so the bottom face was dropped). The blend ends on
+    the neighbouring side faces (120 degrees inside the hexagon) and is cut back there.
+    The removed material at depth a (into the top face) and b (down the side) spans
+    10 + 2 a / sqrt 3 along the edge (the hexagon widens inwards), so the volume drops
+    by 10 A + (2 / sqrt 3) M with A and M = int a dA over the corner region
+    (_quintic_integral)."""
+    s, top = shapes.hex_prism()
+    removed = 10.0 * _quintic_integral(lambda q: q) \
+        + 2.0 / math.sqrt(3.0) * _quintic_integral(lambda q: 0.5 * q * q)
+    for name in top:
+        solid, rep = C2Blend.fillet_report(s, [name], 1.0, label="Hex")
+        assert_valid(solid)
+        assert_g2(rep)
+        assert abs(solid.Volume - (s.Volume - removed)) < 1e-6, name
+
+
 @pytest.mark.parametrize("axis", ["z", "x"])
 def test_concave_edge_ending_on_a_slanted_face(axis):
     """The L bracket's inner (concave) edge, x = z = 5, ending on a plane tilted 20

@@ -17,15 +17,21 @@ TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
 
 
 def interior_points(face, n=4):
-    """Points of the face on an n x n grid of its parameter range, inside its domain."""
+    """Points of the face on an n x n grid of its parameter range, inside its domain and
+    off its boundary (a regular hexagon's centre row of the grid runs through two of its
+    vertices: such a point also lies on the neighbouring faces)."""
     u0, u1, v0, v1 = face.ParameterRange
+    boundary = Part.Compound(face.Edges)
+    tol = 1e-6 * face.BoundBox.DiagonalLength
     out = []
     for i in range(1, n + 1):
         for j in range(1, n + 1):
             u = u0 + (u1 - u0) * (i - 0.5) / n
             v = v0 + (v1 - v0) * (j - 0.5) / n
             if face.isPartOfDomain(u, v):
-                out.append(face.Surface.value(u, v))
+                p = face.Surface.value(u, v)
+                if boundary.distToShape(Part.Vertex(p))[0] > tol:
+                    out.append(p)
     return out
 
 
