@@ -312,6 +312,26 @@ def test_edge_ending_on_a_bulging_cylinder():
     assert len(top) == 1 and abs(top[0].Area - (top0[0].Area - big_f(1.0))) < 1e-6
 
 
+def test_fillet_whose_contact_lies_on_occts_seam():
+    """A wedge symmetric in the plane z = 5 (Part.makeWedge(0, 0, 0, 2, 2, 10, 10, 10, 8,
+    8)). OCCT's fillet of Edge4 is a cylinder with one contact edge on its seam:
+    two points of that edge got parameters a period apart, so the direction along the
+    fillet was taken as across, Newton's method for the contact failed and OCCT's face
+    was kept. Now G2, and it removes the same volume as its mirror image, Edge2."""
+    s = Part.makeWedge(0, 0, 0, 2, 2, 10, 10, 10, 8, 8)
+    a, b = (s.getElement(n) for n in ("Edge2", "Edge4"))
+    mirror = [V(p.x, p.y, 10.0 - p.z) for p in (a.Vertexes[0].Point, a.Vertexes[1].Point)]
+    assert all(min((m - v.Point).Length for v in b.Vertexes) < 1e-12 for m in mirror)
+    volumes = []
+    for name in ("Edge2", "Edge4"):
+        solid, rep = C2Blend.fillet_report(s, [name], 1.0, label="Wedge")
+        assert_valid(solid)
+        assert_g2(rep)
+        volumes.append(solid.Volume)
+    assert abs(volumes[0] - volumes[1]) < 1e-9 * s.Volume
+    assert volumes[0] < s.Volume - 0.1
+
+
 def test_hexagonal_prism_top_edges():
     """Each top edge of a regular hexagonal prism on its own (three of them failed to
     sew: the 3 x 3 grid point chosen inside the hexagonal bottom face lay on its

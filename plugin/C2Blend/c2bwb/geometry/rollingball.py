@@ -105,20 +105,32 @@ class RollingBallFace:
             self._orient()
 
     def _orient(self):
+        """along: the surface parameter whose derivative carries the contact edge's
+        tangent (from derivatives, not from two points' parameters, which a periodic
+        surface may give a period apart when the edge lies on its seam); across: the
+        contacts' across-parameters, brought into the face's range."""
         s = self.face.Surface
         e1 = self.contacts[0][0]
-        pts = [e1.valueAt(e1.FirstParameter + k * (e1.LastParameter - e1.FirstParameter) / 3.0)
-               for k in (1, 2)]
-        uv = [s.parameter(p) for p in pts]
-        self.along = 0 if abs(uv[0][0] - uv[1][0]) > abs(uv[0][1] - uv[1][1]) else 1
+        p = e1.valueAt(0.5 * (e1.FirstParameter + e1.LastParameter))
+        t = e1.tangentAt(0.5 * (e1.FirstParameter + e1.LastParameter))
+        u, v = s.parameter(p)
+        su, sv = s.getDN(u, v, 1, 0), s.getDN(u, v, 0, 1)
+        n = su.cross(sv)
+        # t = alpha su + beta sv: alpha = (t x sv) . n / |n|^2, beta = (su x t) . n / |n|^2
+        self.along = 0 if abs(t.cross(sv).dot(n)) > abs(su.cross(t).dot(n)) else 1
         across = 1 - self.along
-        cs = []
-        for e, _ in self.contacts:
-            p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
-            cs.append(s.parameter(p)[across])
         r = self.face.ParameterRange
         lo, hi = (r[2], r[3]) if across == 1 else (r[0], r[1])
-        self.across = tuple(_snap(c, lo, hi) for c in cs)
+        periodic = s.isVPeriodic() if across == 1 else s.isUPeriodic()
+        period = (s.VPeriod() if across == 1 else s.UPeriod()) if periodic else None
+        cs = []
+        for e, _ in self.contacts:
+            c = s.parameter(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))[across]
+            if period:  # the copy of c nearest to [lo, hi]
+                c = min((c + k * period for k in (-1, 0, 1)),
+                        key=lambda x: max(lo - x, x - hi, 0.0))
+            cs.append(_snap(c, lo, hi))
+        self.across = tuple(cs)
         self.range = (r[0], r[1]) if self.along == 0 else (r[2], r[3])
 
     def point(self, a, c):
