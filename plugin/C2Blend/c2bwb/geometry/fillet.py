@@ -333,11 +333,19 @@ def _cut_face(face, tools, sharp, corners, tol):
     return [f for f in pieces if not any(touches(f, e) for e in sharp)]
 
 
+def _spans(curve):
+    """Knot spans of a B-spline curve (1 for other curves)."""
+    return max(getattr(curve, "NbKnots", 2) - 1, 1)
+
+
 def _update_tolerances(solid, faces):
     """Raise the tolerance of each edge of `faces` to twice the largest distance between
     its 3D curve and its curves on the faces (what the BOP check measures, by
-    optimisation: the 101 samples here can miss the largest by a little), where the new
-    pcurves made by cutting and sewing are further off than half the edge's tolerance."""
+    optimisation), where the new pcurves made by cutting and sewing are further off
+    than half the edge's tolerance. Sampled at 100 points, and at least 8 per knot span
+    of either curve: the distance peaks between the 129 nodes of a mitre's cut curve,
+    which 101 samples missed (1.15e-7 against 4e-8 found, on a box's four top edges at
+    R = 4)."""
     for f in faces:
         for e in f.Edges:
             worst = 0.0
@@ -346,8 +354,9 @@ def _update_tolerances(solid, faces):
                     c2, surf, place, a, b = e.curveOnSurface(k)
                 except (TypeError, ValueError, RuntimeError, IndexError):
                     break
-                for j in range(101):
-                    t = a + (b - a) * j / 100.0
+                n = max(100, 8 * _spans(c2), 8 * _spans(e.Curve))
+                for j in range(n + 1):
+                    t = a + (b - a) * j / n
                     uv = c2.value(t)
                     q = surf.value(uv.x, uv.y)
                     q = place.multVec(q) if place else q
