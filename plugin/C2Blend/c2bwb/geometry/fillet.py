@@ -11,13 +11,14 @@ data is fitted as a B-spline face. An open chain that does not end on a plane ac
 (a slanted or curved end face, or another fillet met at an angle: a mitre) is traced
 past its ends and cut back by what lies there (ends.py). The faces of the original
 solid that the blend touches (its two sides and its end faces) are cut anew along the
-blend's boundary edges (a concave fillet's planar end faces grow by the region between
-the corner and the blend's end section), and everything is sewn into a solid and
-checked (BRepCheck, and continuity along every trimline). Kept as OCCT made them, and
-reported as such with the reason (no G2 claim is made there): corner patches where
-three fillets meet at a vertex, chains whose side changes face, and chains whose exact
-contact, blend, fit or cut cannot be built or whose blend overshoots its faces
-(NotReplaced, ends.trim, Unassembled), with the fillets that meet them in a mitre.
+blend's boundary edges (an end face grows by the region between the corner and the
+blend's end section where the fillet uncovers its surface), and everything is sewn into
+a solid and checked (BRepCheck, and continuity along every trimline). Kept as OCCT made
+them, and reported as such with the reason (no G2 claim is made there): corner patches
+where three fillets meet at a vertex, chains whose side changes face, and chains whose
+exact contact, blend, fit, cut or end face's growth cannot be built or whose blend
+overshoots its faces (NotReplaced, ends.trim, Unassembled), with the fillets that meet
+them in a mitre.
 """
 import math
 import time
