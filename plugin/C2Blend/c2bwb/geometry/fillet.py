@@ -30,7 +30,8 @@ from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
 from . import ends
-from .rollingball import TANGENT_ANGLE, RollingBallFace, chains, interior_points, new_faces
+from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
+                          new_faces)
 from .surface import Frame, angle, frame_at_point, off_surface, project
 from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
 
@@ -86,7 +87,7 @@ def resolve_edges(shape, edges, label):
             raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2"
                                % (len(faces), "" if len(faces) == 1 else "s"),
                                "%s.%s" % (label, name))
-        p = _midpoint(edge)
+        p = midpoint(edge)
         a = angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
         if a < TANGENT_ANGLE:
             raise C2BlendError("the faces meet tangentially along the edge (their normals "
@@ -209,10 +210,6 @@ def overshoot(surface, sides, signs):
                 f = Frame(face, *guess)
                 worst = max(worst, -math.copysign(1.0, g) * (p - f.p).dot(f.n))
     return worst
-
-
-def _midpoint(edge):
-    return edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
 
 
 def _on_face(face, p, tol):
@@ -485,7 +482,7 @@ def _where(label, names, chains_):
     to the chain whose faces are nearest to the edge's midpoint."""
     out = {}
     for n, e in names:
-        mid = Part.Vertex(_midpoint(e))
+        mid = Part.Vertex(midpoint(e))
         c = min(chains_, key=lambda c: min(f.distToShape(mid)[0] for f in c.faces))
         out.setdefault(id(c), []).append("%s.%s" % (label, n))
     return {k: ", ".join(v) for k, v in out.items()}

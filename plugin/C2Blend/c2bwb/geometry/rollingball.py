@@ -57,11 +57,27 @@ def _unique_edges(face):
     return out
 
 
-def _snap(c, lo, hi):
-    """c, or the end of [lo, hi] it lies within 1e-6 (relative) of: projections onto
-    periodic surfaces may return a parameter a period away or a rounding off the end."""
+def midpoint(edge):
+    """The point of edge at the middle of its parameter range."""
+    return edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
+
+
+def _snap(c, lo, hi, period=None):
+    """Parameter c brought to [lo, hi]: projections onto a periodic surface may return it
+    a period away (on the seam, 0 for 2 pi), so the copy c + k period nearest to
+    [lo, hi] is taken; then the end of [lo, hi] it lies within 1e-6 (relative) of, for
+    a rounding off the end."""
+    if period:
+        c = min((c + k * period for k in (-1, 0, 1)), key=lambda x: max(lo - x, x - hi, 0.0))
     end = min((lo, hi), key=lambda x: abs(x - c))
     return end if abs(end - c) < 1e-6 * (1 + abs(hi - lo)) else c
+
+
+def _period(surface, k):
+    """The period of the surface's parameter k (0: u, 1: v), or None."""
+    if k == 0:
+        return surface.UPeriod() if surface.isUPeriodic() else None
+    return surface.VPeriod() if surface.isVPeriodic() else None
 
 
 class RollingBallFace:
@@ -85,7 +101,7 @@ class RollingBallFace:
             if not nbrs:  # a seam
                 continue
             nb = nbrs[0]
-            p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+            p = midpoint(e)
             tangent = angle(frame_at_point(face, p).n, frame_at_point(nb, p).n) < TANGENT_ANGLE
             is_fillet = any(nb.isSame(g) for g in fillet_faces)
             if is_fillet and tangent:
@@ -111,9 +127,8 @@ class RollingBallFace:
         contacts' across-parameters, brought into the face's range."""
         s = self.face.Surface
         e1 = self.contacts[0][0]
-        p = e1.valueAt(0.5 * (e1.FirstParameter + e1.LastParameter))
+        u, v = s.parameter(midpoint(e1))
         t = e1.tangentAt(0.5 * (e1.FirstParameter + e1.LastParameter))
-        u, v = s.parameter(p)
         su, sv = s.getDN(u, v, 1, 0), s.getDN(u, v, 0, 1)
         n = su.cross(sv)
         # t = alpha su + beta sv: alpha = (t x sv) . n / |n|^2, beta = (su x t) . n / |n|^2
@@ -121,16 +136,8 @@ class RollingBallFace:
         across = 1 - self.along
         r = self.face.ParameterRange
         lo, hi = (r[2], r[3]) if across == 1 else (r[0], r[1])
-        periodic = s.isVPeriodic() if across == 1 else s.isUPeriodic()
-        period = (s.VPeriod() if across == 1 else s.UPeriod()) if periodic else None
-        cs = []
-        for e, _ in self.contacts:
-            c = s.parameter(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))[across]
-            if period:  # the copy of c nearest to [lo, hi]
-                c = min((c + k * period for k in (-1, 0, 1)),
-                        key=lambda x: max(lo - x, x - hi, 0.0))
-            cs.append(_snap(c, lo, hi))
-        self.across = tuple(cs)
+        self.across = tuple(_snap(s.parameter(midpoint(e))[across], lo, hi, _period(s, across))
+                            for e, _ in self.contacts)
         self.range = (r[0], r[1]) if self.along == 0 else (r[2], r[3])
 
     def point(self, a, c):
@@ -145,8 +152,7 @@ class RollingBallFace:
     def along_at(self, edge):
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
         lies, or None when it lies inside the range."""
-        p = edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
-        a = _snap(self.face.Surface.parameter(p)[self.along], *self.range)
+        a = _snap(self.face.Surface.parameter(midpoint(edge))[self.along], *self.range)
         return a if a in self.range else None
 
 
