@@ -280,16 +280,17 @@ def _growth(face, edge, tol):
     return None
 
 
-def _inner_points(edge):
-    """Points of edge at a quarter, half and three quarters of its parameter range."""
+def _edge_points(edge, fractions=(0.25, 0.5, 0.75)):
+    """Points of edge at these fractions of its parameter range (by default its inner
+    points: a quarter, half and three quarters)."""
     a, b = edge.FirstParameter, edge.LastParameter
-    return [edge.valueAt(a + x * (b - a)) for x in (0.25, 0.5, 0.75)]
+    return [edge.valueAt(a + x * (b - a)) for x in fractions]
 
 
 def _face_under(edge, faces, tol):
     """The first of `faces` whose surface holds the edge (at its inner points, within tol
     or 10x the edge's tolerance), or None."""
-    pts = _inner_points(edge)
+    pts = _edge_points(edge)
     tol = max(tol, 10.0 * edge.Tolerance)
     return next((f for f in faces if all(off_surface(f.Surface, p) <= tol for p in pts)),
                 None)
@@ -297,16 +298,15 @@ def _face_under(edge, faces, tol):
 
 def _edge_on_face(edge, face, tol):
     """True when edge lies on face (at its inner points, within tol)."""
-    return all(_on_face(face, p, tol) for p in _inner_points(edge))
+    return all(_on_face(face, p, tol) for p in _edge_points(edge))
 
 
 def _consumed(edge, boundary, tol):
     """True when no part of edge lies on `boundary` (the faces of OCCT's fillet result),
     tested at its middle and at 1e-3 of its length from each end: an edge the fillet
     only shortens keeps one end's neighbourhood, or its middle if shortened at both."""
-    a, b = edge.FirstParameter, edge.LastParameter
-    return all(boundary.distToShape(Part.Vertex(edge.valueAt(a + x * (b - a))))[0] > tol
-               for x in (0.5, 1e-3, 1.0 - 1e-3))
+    return all(boundary.distToShape(Part.Vertex(p))[0] > tol
+               for p in _edge_points(edge, (0.5, 1e-3, 1.0 - 1e-3)))
 
 
 def _cut_face(face, tools, sharp, corners, tol):
@@ -323,10 +323,9 @@ def _cut_face(face, tools, sharp, corners, tol):
     def touches(piece, edge):
         if piece.distToShape(edge)[0] > tol:
             return False
-        a, b = edge.FirstParameter, edge.LastParameter
-        pts = [edge.valueAt(a + x * (b - a)) for x in (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)]
         return any(piece.distToShape(Part.Vertex(p))[0] <= tol
-                   and all((p - c).Length > tol for c in corners) for p in pts)
+                   and all((p - c).Length > tol for c in corners)
+                   for p in _edge_points(edge, (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)))
 
     return [f for f in pieces if not any(touches(f, e) for e in sharp)]
 
