@@ -127,6 +127,24 @@ def test_closed_chain_of_two_edges():
         assert abs(r["g2"] - 0.5) < 1e-9  # torus meridian 1/R against plane / cylinder
 
 
+@pytest.mark.parametrize("angle", [60, 150])
+def test_closed_chain_linked_on_the_faces_seam(angle):
+    """The split shaft turned about its axis: one rolling-ball face's along-range is
+    [0, pi] and the projection of its link to the other face returns 2 pi, a period
+    away (it was read as a link inside the range, a corner patch, and the chain kept
+    as OCCT's). The fillet is G2 and removes the same volume as unturned (a rotation)."""
+    s, names = shapes.split_shaft_on_plate()
+    plain, _ = C2Blend.fillet_report(s, names, 2.0)
+    turned = s.copy()
+    turned.rotate(V(0, 0, 0), V(0, 0, 1), angle)
+    solid, rep = C2Blend.fillet_report(turned, names, 2.0, label="Turned")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    assert len(rep["blends"]) == 1 and rep["blends"][0]["closed"]
+    assert abs(solid.Volume - plain.Volume) < 1e-9 * s.Volume
+
+
 def trimline_samples(solid, rep, n=41):
     """Points (S(0, v), S(1, v)) of each blend face of a fillet at n values of v."""
     out = []

@@ -151,8 +151,10 @@ class RollingBallFace:
 
     def along_at(self, edge):
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
-        lies, or None when it lies inside the range."""
-        a = _snap(self.face.Surface.parameter(midpoint(edge))[self.along], *self.range)
+        lies, or None when it lies inside the range. On a periodic along-parameter the
+        projection may return the end a period away (0 for 2 pi); _snap folds it back."""
+        s = self.face.Surface
+        a = _snap(s.parameter(midpoint(edge))[self.along], *self.range, _period(s, self.along))
         return a if a in self.range else None
 
 
