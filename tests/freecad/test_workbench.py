@@ -9,6 +9,7 @@ the check is shown able to fail. Expected values are closed forms, never our out
 import json
 import math
 import os
+import re
 
 import FreeCAD
 import Part
@@ -635,6 +636,30 @@ def test_radius_too_large(boxdoc):
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: .*fillet of radius 20 failed.*too large"):
         make.make_fillet(box, ["Edge1"], 20.0)
     assert shapes.document_state(doc) == before
+
+
+@pytest.mark.parametrize("edges, limit", [(["Edge1"], 10.0), (["Edge1", "Edge2", "Edge3"], 5.0)])
+def test_radius_too_large_names_the_largest_radius(edges, limit):
+    """The message brackets the largest radius OCCT accepts, found by bisection. One
+    edge of the 10 mm box may take up both faces (R < 10); three edges meeting at a
+    vertex share them, two on each face (R < 5)."""
+    with pytest.raises(C2BlendError) as info:
+        fl.fillet(shapes.box(), edges, 20.0, label="Box")
+    m = re.search(r"radius 20 is too large here: OCCT accepts ([0-9.e+-]+) but not "
+                  r"([0-9.e+-]+) on these edges", str(info.value))
+    assert m, str(info.value)
+    lo, hi = float(m.group(1)), float(m.group(2))
+    assert lo < limit <= hi * (1 + 1e-9) and hi / lo < 1.02
+
+
+def test_rolling_ball_failing_at_every_radius(monkeypatch):
+    """When OCCT fails whatever the radius (fault injection), the message says so
+    instead of blaming the radius."""
+    monkeypatch.setattr(fl, "_rolling_ball", lambda shape, edges, radius: (None, "injected"))
+    with pytest.raises(C2BlendError, match=r"Box\.Edge1: OCCT's rolling-ball fillet of radius 2 "
+                       r"failed \(injected\), and so does every radius down to 0\.00195: the "
+                       r"rolling ball cannot follow these edges, whatever the radius"):
+        fl.fillet(shapes.box(), ["Edge1"], 2.0, label="Box")
 
 
 def resonant_rho(shape, edge):
