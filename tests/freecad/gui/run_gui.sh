@@ -10,7 +10,8 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 SRC=$(cd "$HERE/../../.." && pwd)
 mkdir -p "$OUT"
 HOME=$(mktemp -d)
-export HOME
+TMPDIR=$HOME   # FreeCAD's Start page leaves a FreeCADStartThumbnails folder in TMPDIR
+export HOME TMPDIR
 trap 'rm -rf "$HOME"' EXIT
 MOD="$HOME/.local/share/FreeCAD/Mod/C2Blend"
 mkdir -p "$MOD"
