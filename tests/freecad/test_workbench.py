@@ -38,6 +38,9 @@ def assert_valid(solid):
     assert solid.ShapeType == "Solid" and solid.isValid()
     solid.check(True)  # BRepCheck: raises on any defect
     assert solid.Volume > 0
+    # faces pointing outwards, not a reversed solid around an inward shell (whose
+    # volume is positive too, but which OCCT's fillet turns inside out)
+    assert solid.Orientation == "Forward" and solid.Shells[0].Orientation == "Forward"
 
 
 def occt_jump(shape, edges, radius, verdicts=("G1",)):
@@ -144,6 +147,28 @@ def test_closed_chain_linked_on_the_faces_seam(angle):
     assert not rep["kept_occt_faces"]
     assert len(rep["blends"]) == 1 and rep["blends"][0]["closed"]
     assert abs(solid.Volume - plain.Volume) < 1e-9 * s.Volume
+
+
+def test_result_filleted_again_by_occt_and_c2blend():
+    """A result is an ordinary solid for further modelling: OCCT's fillet and chamfer of
+    a plate edge of the filleted shaft remove material and stay valid (on an inside-out
+    result they gave a negative volume), and so does C2Blend's own second fillet."""
+    s, e = shapes.shaft_on_plate()
+    solid = C2Blend.fillet(s, [e], 2.0)
+    plate = [x for x in solid.Edges if x.distToShape(Part.Vertex(V(-20, 3, 0)))[0] < 1e-7
+             and x.distToShape(Part.Vertex(V(-20, 6, 0)))[0] < 1e-7]
+    assert len(plate) == 1
+    for again in (solid.makeFillet(1.0, plate), solid.makeChamfer(1.0, plate)):
+        assert len(again.Solids) == 1  # OCCT returns a compound of one solid here
+        again = again.Solids[0]
+        assert_valid(again)
+        assert 0 < solid.Volume - again.Volume < 40 * 1.0  # at most the 40 mm edge's 1 x 1
+    name = "Edge%d" % (1 + next(i for i, x in enumerate(solid.Edges) if x.isSame(plate[0])))
+    twice, rep = C2Blend.fillet_report(solid, [name], 1.0, label="Twice")
+    assert_valid(twice)
+    assert_g2(rep)
+    # the plate edge's fillet removes (1 - pi / 4) R^2 per unit length, 40 mm long
+    assert abs((solid.Volume - twice.Volume) / (40 * (1 - math.pi / 4)) - 1) < 0.2
 
 
 def trimline_samples(solid, rep, n=41):

@@ -465,8 +465,11 @@ def assemble(shape, result, blended, fillet_faces, where):
                            "edge(s) left (gaps wider than the sewing tolerance)"
                            % (len(shells), free), where, "sewing")
     solid = Part.Solid(shells[0])
-    if solid.Volume < 0:
-        solid.reverse()
+    if solid.Orientation == "Reversed" or solid.Volume < 0:
+        # the sewn faces point inwards and Part.Solid only flagged the solid reversed
+        # around them; OCCT's fillet and chamfer of such a solid give an inside-out,
+        # invalid one. Reverse the faces themselves instead.
+        solid = Part.Solid(Part.Shell([f.reversed() for f in shells[0].Faces]))
     _update_tolerances(solid, [_find_face(solid, b) for b in blended])
     try:
         solid.check(True)  # BRepCheck_Analyzer, as isValid(), but says what is wrong
