@@ -193,6 +193,18 @@ def loft_with_boss(angle):
     return s, names
 
 
+def gusset_bracket():
+    """l_bracket with a triangular gusset 4 thick in its inner corner; returns (solid,
+    names of the gusset's two sloped edges)."""
+    s = l_bracket()[0]
+    g = Part.Face(Part.makePolygon([V(5, 13, 5), V(25, 13, 5), V(5, 13, 25), V(5, 13, 5)]))
+    s = s.fuse(g.extrude(V(0, 4, 0))).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Line)
+             and e.BoundBox.XLength > 5 and e.BoundBox.ZLength > 5 and e.BoundBox.YLength < 1e-9]
+    assert len(names) == 2, names
+    return s, names
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

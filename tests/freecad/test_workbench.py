@@ -171,6 +171,19 @@ def test_result_filleted_again_by_occt_and_c2blend():
     assert abs((solid.Volume - twice.Volume) / (40 * (1 - math.pi / 4)) - 1) < 0.2
 
 
+def test_input_unchanged_when_occt_shares_an_l_shaped_face():
+    """The gusset's sloped edges: faces of OCCT's fillet that it shares with the input
+    (L-shaped ones, probed through a mesh) were tessellated, which set their Checked
+    flag in the input's BREP. The input must come back bit for bit."""
+    s, names = shapes.gusset_bracket()
+    before = s.exportBrepToString()
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Gusset")
+    assert s.exportBrepToString() == before
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 2
+
+
 def trimline_samples(solid, rep, n=41):
     """Points (S(0, v), S(1, v)) of each blend face of a fillet at n values of v."""
     out = []

@@ -590,6 +590,10 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     shape_params = check_params(radius, continuity, shape_params, tension, label)
     names = resolve_edges(shape, edges, label)
     check_solid(shape, label)
+    # OCCT's fillet shares faces and edges with its input, and what follows writes to
+    # some of them (a tessellation sets a face's Checked flag): work on a copy
+    shape = shape.copy()
+    names = [(n, shape.getElement(n)) for n, _ in names]
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     result, msg = _rolling_ball(shape, [e for _, e in names], radius)
     if result is None:
