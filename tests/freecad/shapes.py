@@ -205,6 +205,18 @@ def gusset_bracket():
     return s, names
 
 
+def cross_hole():
+    """Cylinder r = 10 along z with a hole r = 3 through it along x; returns (solid,
+    names of the edges of the opening at x > 0, of the opening at x < 0)."""
+    s = Part.makeCylinder(10, 40, V(0, 0, -20)).cut(
+        Part.makeCylinder(3, 40, V(-20, 0, 0), V(1, 0, 0))).removeSplitter()
+    side = [["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if isinstance(e.Curve, Part.BSplineCurve) and k * e.BoundBox.Center.x > 5]
+            for k in (1, -1)]
+    assert side[0] and side[1], side  # OCCT splits the +x opening at the seam
+    return (s, *side)
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

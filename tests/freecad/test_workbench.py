@@ -184,6 +184,29 @@ def test_input_unchanged_when_occt_shares_an_l_shaped_face():
     assert not rep["kept_occt_faces"] and len(rep["blends"]) == 2
 
 
+def test_one_opening_of_a_cross_hole():
+    """Filleting one opening of a hole through a cylinder rebuilds the cylinder's face,
+    and with it the other opening's edges; their tolerance must cover their pcurves
+    again (the BOP check failed). By the mirror symmetry x -> -x, the blend of one
+    opening is the mirror image of the other's (OCCT splits only the +x opening at its
+    seam, so the two are sampled differently)."""
+    s, plus, minus = shapes.cross_hole()
+    blends = []
+    for edges in (plus, minus):
+        solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Cross")
+        assert_valid(solid)
+        assert_g2(rep)
+        assert not rep["kept_occt_faces"]
+        blends.append([f for f in solid.Faces if isinstance(f.Surface, Part.BSplineSurface)])
+    assert len(blends[0]) == len(blends[1]) == 1
+    a, b = blends[0][0], blends[1][0]
+    u0, u1, v0, v1 = a.ParameterRange
+    for i in range(5):
+        for j in range(5):
+            p = a.Surface.value(u0 + (u1 - u0) * i / 4, v0 + (v1 - v0) * j / 4)
+            assert b.distToShape(Part.Vertex(V(-p.x, p.y, p.z)))[0] < 1e-6
+
+
 def trimline_samples(solid, rep, n=41):
     """Points (S(0, v), S(1, v)) of each blend face of a fillet at n values of v."""
     out = []
