@@ -217,6 +217,21 @@ def cross_hole():
     return (s, *side)
 
 
+def spline_block():
+    """A block whose front face is extruded from an open interpolating B-spline through
+    (0, 0), (10, 3), (20, -2), (30, 0), 20 deep and 15 high; returns (solid, name of the
+    spline's top edge)."""
+    bs = Part.BSplineCurve()
+    bs.interpolate([V(0, 0, 0), V(10, 3, 0), V(20, -2, 0), V(30, 0, 0)])
+    w = Part.Wire([bs.toShape(), Part.makeLine(V(30, 0, 0), V(30, 20, 0)),
+                   Part.makeLine(V(30, 20, 0), V(0, 20, 0)), Part.makeLine(V(0, 20, 0), V(0, 0, 0))])
+    s = Part.Face(w).extrude(V(0, 0, 15))
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if isinstance(e.Curve, Part.BSplineCurve) and abs(e.BoundBox.ZMin - 15) < 1e-9]
+    assert len(names) == 1, names
+    return s, names[0]
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

@@ -974,6 +974,26 @@ def test_overshooting_blend_is_kept():
         assert abs(solid.Volume - rep["occt_volume"]) < 1e-9 * solid.Volume
 
 
+@pytest.mark.parametrize("tension", [0.5, 1.0])
+def test_blend_on_a_bounded_spline_face_does_not_overshoot(tension):
+    """The top edge of a block extruded from an open B-spline: the part of the blend
+    traced past the chain's ends lies beyond the bounded spline surface, where its
+    projection is clamped to the surface's edge; that was measured as an overshoot of
+    0.019 at any tension, and OCCT's face kept. The blend is G2, and it lies inside the
+    block (OCCT's classifier), as a convex fillet must."""
+    s, edge = shapes.spline_block()
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, tension=tension, label="Spline")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    blend = [f for f in solid.Faces if isinstance(f.Surface, Part.BSplineSurface)
+             and f.BoundBox.ZMax > 14]
+    assert len(blend) == 1
+    points = blend[0].tessellate(0.05)[0]  # inside the face, which its ends cut
+    assert len(points) > 100
+    assert all(s.isInside(p, 1e-7, True) for p in points)
+
+
 def _corner_area(radius, tension=1.0):
     """Area between a 90 degree corner's two legs and the blend's cross-section from
     (R, 0) to (0, R) (closed form): the quintic Hermite curve x(u) = R h0(u) - s h1(u),

@@ -196,7 +196,10 @@ def overshoot(surface, sides, signs):
     side of the surfaces of its side faces (sides[0] at u = 0, sides[1] at u = 1): it
     should stay on the rolling ball's side of each (signs: contact.Contact.signs).
     Measured at OVER_V values of v, marching from each trimline to u = 1/2 (projections
-    start from the previous point's)."""
+    start from the previous point's). A point beyond a bounded surface's edge (in the
+    part traced past a chain's end, cut off later) has no foot point on it: OCCT's
+    projection returns the nearest boundary point instead, which measures nothing, so
+    such points are skipped."""
     u0, u1, v0, v1 = surface.bounds()
     worst = 0.0
     for k, (face, g) in enumerate(zip(sides, signs)):
@@ -208,7 +211,10 @@ def overshoot(surface, sides, signs):
                 p = surface.value(x if k == 0 else 1.0 - x, v)
                 guess = project(face.Surface, p, guess)
                 f = Frame(face, *guess)
-                worst = max(worst, -math.copysign(1.0, g) * (p - f.p).dot(f.n))
+                d = p - f.p
+                off = d.dot(f.n)
+                if (d - f.n * off).Length <= 1e-3 * d.Length:  # a foot point
+                    worst = max(worst, -math.copysign(1.0, g) * off)
     return worst
 
 
