@@ -686,7 +686,8 @@ def test_edge_with_one_face(boxdoc):
     sheet.Shape = Part.makeBox(10, 10, 10).Faces[0]
     doc.recompute()
     before = shapes.document_state(doc)
-    with pytest.raises(C2BlendError, match=r"Sheet\.Edge2: the edge has 1 adjacent face;"):
+    with pytest.raises(C2BlendError, match=r"Sheet\.Edge2: the edge has 1 adjacent face; a fillet "
+                       r"needs exactly 2 \(the shape is a Face with 0 solid\(s\)"):
         make.make_fillet(sheet, ["Edge2"], 1.0)
     assert shapes.document_state(doc) == before
 
@@ -721,6 +722,30 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
                        r"failed \(injected\), and so does every radius down to 0\.00195: the "
                        r"rolling ball cannot follow these edges, whatever the radius"):
         fl.fillet(shapes.box(), ["Edge1"], 2.0, label="Box")
+
+
+def test_invalid_input_is_named_when_the_result_fails_the_check():
+    """transformGeometry with a rotation turns the shaft's faces into B-splines that the
+    BOP check rejects (C0). The fillet then fails the check too, and the message must
+    say that the input already did, not blame the sewing alone."""
+    s, edge = shapes.shaft_on_plate()
+    pl = FreeCAD.Placement(V(1000, -500, 250), FreeCAD.Rotation(V(1, 2, 3), 37.3))
+    t = s.transformGeometry(pl.toMatrix())
+    with pytest.raises(Exception):
+        t.check(True)
+    with pytest.raises(C2BlendError, match=r"(?s)Shaft\.%s: the filleted solid is not valid after "
+                       r"sewing .*; the input solid already fails that check .*, so repair or "
+                       r"rebuild it first" % edge):
+        fl.fillet(t, [edge], 2.0, label="Shaft")
+
+
+def test_edge_of_a_face_names_the_shape_kind():
+    """A face given as the shape: its edges have one adjacent face, and the message also
+    says the shape is not a solid."""
+    with pytest.raises(C2BlendError, match=r"Face\.Edge1: the edge has 1 adjacent face; a "
+                       r"fillet needs exactly 2 \(the shape is a Face with 0 solid\(s\); a "
+                       r"fillet needs one closed solid\)"):
+        fl.fillet(shapes.box().Faces[0], ["Edge1"], 1.0, label="Face")
 
 
 def resonant_rho(shape, edge):

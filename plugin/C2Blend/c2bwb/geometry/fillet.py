@@ -84,8 +84,11 @@ def resolve_edges(shape, edges, label):
     for name, edge in out:
         faces = ck.edge_faces(shape, edge)
         if len(faces) != 2:
-            raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2"
-                               % (len(faces), "" if len(faces) == 1 else "s"),
+            raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2 "
+                               "(the shape is a %s with %d solid(s); a fillet needs one "
+                               "closed solid)"
+                               % (len(faces), "" if len(faces) == 1 else "s", shape.ShapeType,
+                                  len(shape.Solids)),
                                "%s.%s" % (label, name))
         p = midpoint(edge)
         a = angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
@@ -485,8 +488,13 @@ def assemble(shape, result, blended, fillet_faces, where):
     try:
         solid.check(True)  # BRepCheck_Analyzer, as isValid(), but says what is wrong
     except Exception as ex:
-        raise C2BlendError("the filleted solid is not valid after sewing (BRepCheck: %s)"
-                           % str(ex).strip(), where, "validity") from None
+        msg = "the filleted solid is not valid after sewing (BRepCheck: %s)" % str(ex).strip()
+        try:
+            shape.check(True)
+        except Exception as orig:
+            msg += ("; the input solid already fails that check (%s), so repair or "
+                    "rebuild it first" % str(orig).strip())
+        raise C2BlendError(msg, where, "validity") from None
     return solid
 
 
