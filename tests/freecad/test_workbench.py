@@ -197,7 +197,7 @@ def test_one_opening_of_a_cross_hole():
         assert_valid(solid)
         assert_g2(rep)
         assert not rep["kept_occt_faces"]
-        blends.append([f for f in solid.Faces if isinstance(f.Surface, Part.BSplineSurface)])
+        blends.append(blend_faces(solid))
     assert len(blends[0]) == len(blends[1]) == 1
     a, b = blends[0][0], blends[1][0]
     u0, u1, v0, v1 = a.ParameterRange
@@ -1011,8 +1011,7 @@ def test_blend_on_a_bounded_spline_face_does_not_overshoot(tension):
     assert_valid(solid)
     assert_g2(rep)
     assert not rep["kept_occt_faces"]
-    blend = [f for f in solid.Faces if isinstance(f.Surface, Part.BSplineSurface)
-             and f.BoundBox.ZMax > 14]
+    blend = [f for f in blend_faces(solid) if f.BoundBox.ZMax > 14]
     assert len(blend) == 1
     points = blend[0].tessellate(0.05)[0]  # inside the face, which its ends cut
     assert len(points) > 100

@@ -98,8 +98,10 @@ static void test_structures(void)
 static void test_sample_error_estimate(void)
 {
     c2b_vdomain d = {0, 2, 0};
-    for (int n = 32; n <= 65; n += (n == 32 ? 1 : 31)) {
-        double smp[65];
+    static const int counts[] = {32, 33, 64};
+    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        int n = counts[c];
+        double smp[64];
         for (int i = 0; i < n; i++)
             smp[i] = fsmooth(2.0 * i / (n - 1));
         c2b_vseries s;

@@ -322,7 +322,8 @@ def _cut_face(face, tools, sharp, corners, tol):
     """The pieces of an original face, cut along the edges `tools` lying on it, that do
     not touch any of the `sharp` edges the fillets consumed, except at `corners` (points
     where fillets end and the face grows from: _growth)."""
-    face = face.copy()  # OCCT may rewrite shared pcurves: leave the input shape alone
+    face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
+    # faces of the solid being assembled (a cylinder's seam): cut a copy
     pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
     if abs(sum(f.Area for f in pieces) - face.Area) > 1e-3 * face.Area:  # areas: ~1e-6
         raise ValueError("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
@@ -577,16 +578,18 @@ def _rolling_ball_failure(shape, edges, radius, msg):
     """The message for a failed rolling-ball fillet, with the largest radius OCCT accepts
     on these edges (halving from radius, then 6 bisections: about 1 % below the limit),
     or the statement that no radius down to radius / 1024 works."""
+    def works(r):
+        return _rolling_ball(shape, edges, r)[0] is not None
+
     head = "OCCT's rolling-ball fillet of radius %g failed (%s)" % (radius, msg)
-    lo = next((radius / 2 ** k for k in range(1, 11)
-               if _rolling_ball(shape, edges, radius / 2 ** k)[0] is not None), None)
+    lo = next((radius / 2 ** k for k in range(1, 11) if works(radius / 2 ** k)), None)
     if lo is None:
         return ("%s, and so does every radius down to %.3g: the rolling ball cannot follow "
                 "these edges, whatever the radius" % (head, radius / 1024))
     hi = 2 * lo
     for _ in range(6):
         mid = math.sqrt(lo * hi)
-        lo, hi = (mid, hi) if _rolling_ball(shape, edges, mid)[0] is not None else (lo, mid)
+        lo, hi = (mid, hi) if works(mid) else (lo, mid)
     return ("%s; radius %g is too large here: OCCT accepts %.3g but not %.3g on these "
             "edges" % (head, radius, lo, hi))
 
@@ -614,10 +617,11 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     shape = shape.copy()
     names = [(n, shape.getElement(n)) for n, _ in names]
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
-    result, msg = _rolling_ball(shape, [e for _, e in names], radius)
+    selected = [e for _, e in names]
+    result, msg = _rolling_ball(shape, selected, radius)
     if result is None:
-        raise C2BlendError(_rolling_ball_failure(shape, [e for _, e in names], radius, msg),
-                           where_all, "radius")
+        raise C2BlendError(_rolling_ball_failure(shape, selected, radius, msg), where_all,
+                           "radius")
     t_occt = time.perf_counter() - t0
     fillet_faces = new_faces(shape, result)
     blended, kept = [], []
