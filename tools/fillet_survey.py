@@ -104,6 +104,10 @@ def parts():
     for angle in (90.0, 135.0):
         lb, edges = shapes.loft_with_boss(angle)
         out.append(("boss on a loft, %g degrees from its seam" % angle, lb, edges, 1.5))
+    rx, edges = shapes.rounded_box()
+    out.append(("rounded box, top outline (side changes face)", rx, edges, 1.0))
+    so, edges = shapes.slot_plate()
+    out.append(("slot in a plate, its rim (side changes face)", so, edges, 1.0))
     return out
 
 

@@ -232,6 +232,44 @@ def spline_block():
     return s, names[0]
 
 
+def _edges_at(s, z):
+    """Names of the edges of s lying in the plane z (no vertical extent)."""
+    return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+            if abs(e.BoundBox.ZMin - z) < 1e-9 and e.BoundBox.ZLength < 1e-9]
+
+
+def rounded_box(tilt=0.0):
+    """A 20 x 20 x 10 box whose four vertical edges are rounded (OCCT's fillet, r = 3):
+    its top outline runs along planes and cylinders. tilt (degrees): the top is cut
+    instead by a plane through z = 8 tilted about x. Returns (solid, names of the top
+    face's edges)."""
+    b = Part.makeBox(20, 20, 10)
+    s = b.makeFillet(3.0, [e for e in b.Edges if e.BoundBox.ZLength > 1])
+    if not tilt:
+        names = _edges_at(s, 10.0)
+        assert len(names) == 8, names
+        return s, names
+    cutter = Part.makeBox(60, 60, 40, V(-20, -20, 8))
+    cutter.rotate(V(0, 0, 8), V(1, 0, 0), tilt)
+    s = s.cut(cutter)
+    top = max(s.Faces, key=lambda f: f.CenterOfMass.z)
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if any(e.isSame(x) for x in top.Edges)]
+
+
+def slot_plate():
+    """A 40 x 20 x 5 plate with a through slot: a stadium of half-width 4 whose centre
+    line runs from (12, 10) to (28, 10). Returns (solid, names of the slot's edges on
+    the top face)."""
+    cutter = Part.makeCylinder(4, 7, V(12, 10, -1)).fuse(
+        [Part.makeCylinder(4, 7, V(28, 10, -1)), Part.makeBox(16, 8, 7, V(12, 6, -1))])
+    s = Part.makeBox(40, 20, 5).cut(cutter.removeSplitter()).removeSplitter()
+    names = [n for n in _edges_at(s, 5.0)
+             if 1 < s.getElement(n).BoundBox.XMin and s.getElement(n).BoundBox.XMax < 39]
+    assert names
+    return s, names
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

@@ -1052,6 +1052,112 @@ def test_l_bracket_inner_edge():
     assert len(solid.Faces) == len(s.Faces) + 1
 
 
+def _clamp(x, lo, hi):
+    return min(max(x, lo), hi)
+
+
+# Chains whose side changes face, with the closed-form removed volume (see the test):
+# (solid maker, top z, depth below the walls of a point, length of the straight
+# stretches, corner axis radius of the arcs' walls, +1 where the material is outside
+# that radius (a slot's round end) or -1 inside (a rounded corner))
+SIDE_CHANGES = {
+    "rounded_box": (shapes.rounded_box, 10.0,
+                    lambda p: 3.0 - math.hypot(p.x - _clamp(p.x, 3, 17), p.y - _clamp(p.y, 3, 17)),
+                    4 * 14.0, 3.0, -1),
+    "slot": (shapes.slot_plate, 5.0,
+             lambda p: math.hypot(p.x - _clamp(p.x, 12, 28), p.y - 10) - 4.0,
+             2 * 16.0, 4.0, 1),
+}
+
+
+@pytest.mark.parametrize("name", sorted(SIDE_CHANGES))
+def test_chain_whose_side_changes_face(name, radius=1.0):
+    """A rounded box's top outline and a slot's rim: the side runs along planes and
+    cylinders, so the data are only C1 along the chain. Each face's run gets the
+    pointwise blend (the quintic Hermite of the data at each point of the trimline).
+    The walls are straight across the fillet and the top is flat, so every section
+    must be the straight 90 degree edge's quintic (_corner_area) in the coordinates a
+    (depth into the material from the wall) and b (depth below the top), swept along
+    the lines and revolved around the arcs' axes: checked at 11 x 11 points of every
+    blend face to 1e-7. The volume removed is that section swept: the straight length
+    times A, plus, by Pappus, pi (r A + g Q) per half turn, with Q the integral of a
+    over the section (g = +1 where the material lies outside the arc, -1 inside).
+    The runs meet G1 (as the wall's plane and cylinder do) and the trimlines are G2."""
+    make, top, depth, straight, r, g = SIDE_CHANGES[name]
+    s, names = make()
+    solid, rep = C2Blend.fillet_report(s, names, radius, label=name)
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    faces = blend_faces(solid)
+    assert len(faces) == len(rep["blends"]) == len(rep["junctions"]) >= 4
+    assert all(b["pointwise"] for b in rep["blends"])
+    assert all(j["verdict"] == "G1" and j["g1"] < 1e-8 for j in rep["junctions"])
+    lines = ck.format_report(rep)
+    assert sum("junction of the pointwise blends" in x for x in lines) == len(faces)
+    worst = 0.0
+    s2 = radius * math.sqrt(2.0)
+
+    def a_of(u):  # the quintic of _corner_area
+        return (radius * (1 - 10 * u**3 + 15 * u**4 - 6 * u**5)
+                - s2 * (u - 6 * u**3 + 8 * u**4 - 3 * u**5))
+
+    for f in faces:
+        srf = f.Surface
+        v0, v1 = srf.bounds()[2:4]
+        on_top = abs(srf.value(0.0, 0.5 * (v0 + v1)).z - top) < 1e-7  # u = 0 on the top
+        for i in range(11):
+            u = i / 10.0 if on_top else 1.0 - i / 10.0
+            for j in range(11):
+                p = srf.value(i / 10.0, v0 + (v1 - v0) * j / 10.0)
+                worst = max(worst, abs(depth(p) - a_of(u)), abs(top - p.z - a_of(1.0 - u)))
+    assert worst < 1e-7
+    area = _corner_area(radius)
+    q = _quintic_integral(lambda a: 0.5 * a * a, radius)
+    removed = straight * area + 2.0 * math.pi * (r * area + g * q)
+    assert abs(s.Volume - solid.Volume - removed) < 1e-8 * removed
+
+
+def test_chain_whose_side_changes_face_kept_where_no_g2_blend_exists():
+    """Where the pointwise blend cannot be G2, OCCT's faces are kept and the reason
+    given. C1 (pointwise blends are C2 only). A top tilted by 0.1 degrees: the plane
+    meets each corner's cylinder in an ellipse, and the direction across the fillet on
+    the wall is no longer the cylinder's axis, so the cylinder curves across the
+    fillet where the plane next to it does not: no surface is G2 to both there."""
+    for kw, tilt, fragment in (({"continuity": "C1"}, 0.0, "implemented for C2 only"),
+                               ({}, 0.1, "where the side changes face")):
+        s, names = shapes.rounded_box(tilt)
+        solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Rounded", **kw)
+        assert_valid(solid)
+        assert rep["verdict"] == "G1" and not rep["blends"]
+        assert len(rep["kept_occt_faces"]) == 1
+        assert fragment in rep["kept_occt_faces"][0]["reason"]
+        assert rep["kept_occt_faces"][0]["where"].startswith("Rounded.Edge")
+
+
+def test_chain_whose_side_changes_face_is_kept_whole(monkeypatch):
+    """When one run's blend cannot be assembled (an injected failure), OCCT's faces are
+    kept for the whole chain, not only for that run: the other runs' blends end at
+    junctions that only that run's blend meets. One reason is reported, the solid is
+    OCCT's and valid, and the verdict G1."""
+    real, calls = fl.assemble, []
+
+    def failing(shape, result, blended, *args):
+        calls.append(len(blended))
+        if len(calls) == 1:
+            raise fl.Unassembled([blended[1]], "injected")
+        return real(shape, result, blended, *args)
+
+    monkeypatch.setattr(fl, "assemble", failing)
+    s, names = shapes.rounded_box()
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Rounded")
+    assert calls == [8]  # no second assembly: nothing is left to replace
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    assert [k["reason"] for k in rep["kept_occt_faces"]] == ["injected"]
+    assert abs(solid.Volume - rep["occt_volume"]) < 1e-9 * solid.Volume
+
+
 def test_concave_and_convex_edges_in_one_call():
     """A step's concave and convex edges at R = 2 in one call: two G2 blends. The
     convex one removes the cross-section area A over the 20 mm width, the concave one

@@ -75,7 +75,7 @@ def _extended(sections, extend):
         if (sec.a_end > sec.a_start) == (i == 0):
             da = -da
         out[i] = Section(sec.rbf, sec.a_start + (da if i == 0 else 0.0),
-                          sec.a_end + (da if i != 0 else 0.0), sec.c1, sec.c2)
+                          sec.a_end + (da if i != 0 else 0.0), sec.c1, sec.c2, sec.sides)
     return out
 
 

@@ -11,6 +11,8 @@ Each end of an open fillet chain is one of:
   surfaces (contact.py), and the blend is cut back by what lies there: the end face's
   surface, or the other fillet's blend, itself extended. One general fuse cuts all such
   blends together, so two blends meeting at a mitre share the edge they are cut along.
+- a junction: where one run of a chain whose side changes face meets the next
+  (rollingball.Run). Both blends end at the ball's section there, which is exact.
 """
 import numpy as np
 import Part
@@ -30,10 +32,12 @@ class ChainEnd:
     """One end of an open chain: at 0 (the start of its sections, the blend's first v) or
     1 (the end, last v); faces: OCCT's faces met there; fillets: those of them that are
     rolling-ball faces (mitres); edges: [(OCCT's end edge, the face it meets there)];
-    across: True when the end is exact (see the module)."""
+    across: True when the end is exact (see the module); junction: True where a run of
+    a chain meets the next run (rollingball.Run): exact, with no face there."""
 
-    def __init__(self, at):
-        self.at, self.faces, self.fillets, self.edges, self.across = at, [], [], [], False
+    def __init__(self, at, junction=False):
+        self.at, self.faces, self.fillets, self.edges = at, [], [], []
+        self.across = self.junction = junction
 
     def edges_on(self, face):
         """OCCT's end edges where the fillet meets `face`."""
@@ -51,7 +55,7 @@ def chain_ends(chain, fillet_faces):
     """[ChainEnd at the start, ChainEnd at the end] of an open chain, [] if closed."""
     if chain.closed:
         return []
-    out = [ChainEnd(0), ChainEnd(1)]
+    out = [ChainEnd(0, chain.junctions[0]), ChainEnd(1, chain.junctions[1])]
     guide = [_guide(chain, at) for at in (0, 1)]
     for edge, nb in chain.ends:
         d = [edge.distToShape(Part.Vertex(m))[0] for m, _ in guide]
@@ -63,7 +67,8 @@ def chain_ends(chain, fillet_faces):
                 end.fillets.append(nb)
     for end in out:
         m, t = guide[end.at]
-        if len(end.faces) == 1 and not end.fillets and end.faces[0].Surface.isPlanar():
+        if not end.junction and len(end.faces) == 1 and not end.fillets \
+                and end.faces[0].Surface.isPlanar():
             n = frame_at_point(end.faces[0], m).n
             end.across = min(angle(n, t), angle(n, -t)) <= ACROSS
     return out

@@ -13,12 +13,14 @@ past its ends and cut back by what lies there (ends.py). The faces of the origin
 solid that the blend touches (its two sides and its end faces) are cut anew along the
 blend's boundary edges (an end face grows by the region between the corner and the
 blend's end section where the fillet uncovers its surface), and everything is sewn into
-a solid and checked (BRepCheck, and continuity along every trimline). Kept as OCCT made
-them, and reported as such with the reason (no G2 claim is made there): corner patches
-where three fillets meet at a vertex, chains whose side changes face, and chains whose
-exact contact, blend, fit, cut or end face's growth cannot be built or whose blend
-overshoots its faces (NotReplaced, ends.trim, Unassembled), with the fillets that meet
-them in a mitre.
+a solid and checked (BRepCheck, and continuity along every trimline). A chain whose side
+changes face (a rounded outline) has data only C1 along it: each run along one pair of
+faces gets the pointwise blend, and the runs meet at junctions (solve_runs). Kept as
+OCCT made them, and reported as such with the reason (no G2 claim is made there):
+corner patches where three fillets meet at a vertex, chains whose side changes face
+where no blend is G2 to both faces, and chains whose exact contact, blend, fit, cut or
+end face's growth cannot be built or whose blend overshoots its faces (NotReplaced,
+ends.trim, Unassembled), with the fillets that meet them in a mitre.
 """
 import math
 import time
@@ -133,14 +135,16 @@ def sample_rows(chain, contact, n, nrows, tension, where):
 
 
 class Blended:
-    """A rolling-ball chain replaced by a PDE blend: surface, fit and data facts; ends:
-    its ends (ends.ChainEnd); full_face: the whole surface; face: the part of it in the
-    solid (full_face cut back at trimmed ends, see ends.trim); probe: a point inside
-    face."""
+    """A rolling-ball chain (or a run of one: rollingball.Run) replaced by a PDE blend:
+    surface, fit and data facts; ends: its ends (ends.ChainEnd); full_face: the whole
+    surface; face: the part of it in the solid (full_face cut back at trimmed ends, see
+    ends.trim); probe: a point inside face; pointwise: True for the pointwise blend of
+    a run; group: the blends of all runs of its chain (None for a whole chain), which
+    are kept or replaced together."""
 
-    def __init__(self, chain, ends, where, surface, fit, samples, data_rel):
+    def __init__(self, chain, ends, where, surface, fit, samples, data_rel, pointwise):
         self.chain, self.ends, self.where, self.surface, self.fit = chain, ends, where, surface, fit
-        self.samples, self.data_rel = samples, data_rel
+        self.samples, self.data_rel, self.pointwise, self.group = samples, data_rel, pointwise, None
         self.full_face = self.face = Part.Face(surface)
         self.surface_diag = self.full_face.BoundBox.DiagonalLength
         sec = chain.sections[len(chain.sections) // 2]
@@ -150,10 +154,11 @@ class Blended:
 
 
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
-               max_samples, fillet_faces):
-    """The PDE blend replacing one rolling-ball chain (see bspline.solve_sampled), from
-    the exact contact of the ball of `radius`, traced past the ends that are trimmed
-    (ends.py). Raises NotReplaced saying why it cannot."""
+               max_samples, fillet_faces, pointwise=False):
+    """The PDE blend replacing one rolling-ball chain or run (see bspline.solve_sampled),
+    from the exact contact of the ball of `radius`, traced past the ends that are
+    trimmed (ends.py); pointwise: trimlines.POINTWISE instead. Raises NotReplaced
+    saying why it cannot."""
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces)
     try:
@@ -161,7 +166,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
         blend, n, err = solve_sampled(
             lambda k: sample_rows(chain, contact, k, nrows, tension, where),
             lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
-                                          "fillet " + where),
+                                          "fillet " + where, pointwise),
             where, samples, max_samples, DATA_REL)
     except ContactError as ex:
         raise NotReplaced(str(ex)) from None
@@ -179,16 +184,63 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                           "%.3g (model units), cutting into the part or bulging out of it; a "
                           "lower tension (here %g) or other shape parameters keep it inside "
                           "the corner" % (over, tension))
-    b = Blended(chain, at_ends, where, surface, fit, n, err)
+    b = Blended(chain, at_ends, where, surface, fit, n, err, pointwise)
     v_ends = surface.bounds()[2:4]
     for end in at_ends:
-        if end.across:
+        if end.across and not end.junction:
             gap = max(off_surface(end.faces[0].Surface, surface.value(u / 8.0, v_ends[end.at]))
                       for u in range(9))
             if gap > ON_FACE * fit["tolerance"]:
                 raise NotReplaced("the blend's end section leaves the end face by %.1e"
                                   % gap)
     return b
+
+
+def solve_runs(chain, radius, where, continuity, tension, tol_rel, samples, max_samples,
+               fillet_faces):
+    """The blends of a chain whose side changes face (chain.runs), one per run. Its
+    boundary data are only C1 along the chain (a face's curvature jumps where it meets
+    the next), which no v-coupled PDE blend reproduces (its series stall, and blends
+    of the runs solved apart do not meet). Each run takes the pointwise blend
+    (trimlines.POINTWISE), whose section at a junction depends on the data there only:
+    the runs meet wherever both faces give the same data there. They do not where the
+    faces' normal curvatures across the fillet differ (a side face's edge crossing the
+    trimline obliquely): no surface is G2 to both there. Returns [Blended], each with
+    group set. Raises NotReplaced saying why the chain cannot be replaced."""
+    if continuity != "C2":
+        raise NotReplaced("the fillet chain runs along different faces on one side, so its "
+                          "data are only C1 along it; such chains are blended pointwise, "
+                          "which is implemented for C2 only (here %s)" % continuity)
+    blends = [solve_face(r, radius, where, continuity, None, tension, tol_rel, samples,
+                         max_samples, fillet_faces, pointwise=True) for r in chain.runs]
+    for a, b in zip(blends, blends[1:] + (blends[:1] if chain.closed else [])):
+        gap, turn = _junction(a.surface, b.surface)
+        if gap > ON_FACE * max(a.fit["tolerance"], b.fit["tolerance"]):
+            raise NotReplaced("where the side changes face, the faces' curvatures across the "
+                              "fillet differ, so no blend is G2 to both there (the blends of "
+                              "the two faces' runs would be %.1e apart)" % gap)
+        if turn > ck.TOL_G1:
+            raise NotReplaced("where the side changes face, the blends of the two runs would "
+                              "meet at a crease of %.1e rad" % turn)
+    for b in blends:
+        b.group = blends
+    return blends
+
+
+JUNCTION_U = 16  # intervals in u at which two runs' blends are compared at a junction
+
+
+def _junction(sa, sb):
+    """(largest distance, largest normal angle) between the end section of surface sa
+    (its last v) and the start section of sb (its first v), at JUNCTION_U + 1 values of
+    u."""
+    va, vb = sa.bounds()[3], sb.bounds()[2]
+    gap = turn = 0.0
+    for i in range(JUNCTION_U + 1):
+        u = i / JUNCTION_U
+        gap = max(gap, (sa.value(u, va) - sb.value(u, vb)).Length)
+        turn = max(turn, angle(sa.normal(u, va), sb.normal(u, vb)))
+    return gap, turn
 
 
 OVER_V, OVER_U = 16, 12  # samples along and across (the half next to each face)
@@ -535,13 +587,17 @@ def _trimline_checks(solid, faces):
     return out
 
 
-def _mitre_checks(solid, faces):
-    """Continuity across the edges where two blends meet at an angle (mitres): creases
-    by construction, as where OCCT's fillets meet there; reported, not counted in the
-    verdict, which is about the trimlines. faces: [(Blended, its face in solid)]."""
+def _shared_edge_checks(solid, faces, junctions):
+    """Continuity across the edges where two blends meet: at an angle (mitres, junctions
+    False), creases by construction, as where OCCT's fillets meet there; or where two
+    runs of one chain meet (junctions True), G1 as the side faces are there. Reported,
+    not counted in the verdict, which is about the trimlines. faces: [(Blended, its
+    face in solid)]."""
     out = []
     for i, (b, f) in enumerate(faces):
         for o, g in faces[i + 1:]:
+            if (b.group is not None and b.group is o.group) != junctions:
+                continue
             for e in f.Edges:
                 if any(e.isSame(x) for x in g.Edges):
                     r = ck.check_edge(solid, e)
@@ -633,8 +689,13 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             kept.append({"where": where, "reason": chain.corner})
             continue
         try:
-            blended.append(solve_face(chain, radius, where, continuity, shape_params, tension,
-                                      tol_rel, samples, max_samples, fillet_faces))
+            if chain.runs:
+                blended += solve_runs(chain, radius, where, continuity, tension, tol_rel,
+                                      samples, max_samples, fillet_faces)
+            else:
+                blended.append(solve_face(chain, radius, where, continuity, shape_params,
+                                          tension, tol_rel, samples, max_samples,
+                                          fillet_faces))
         except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
     t_solve = None
@@ -648,9 +709,12 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                 break
             except Unassembled as ex:
                 failed = [(b, str(ex)) for b in ex.blends]
+        drop = []
         for b, reason in failed:
-            kept.append({"where": b.where, "reason": reason})
-        blended = [b for b in blended if not any(b is x for x, _ in failed)]
+            if not any(b is x for x in drop):  # with the other runs of its chain, once
+                kept.append({"where": b.where, "reason": reason})
+                drop += b.group or [b]
+        blended = [b for b in blended if not any(b is x for x in drop)]
     t_assemble = time.perf_counter()
     faces = [(b, _find_face(solid, b)) for b in blended]
     checks = _trimline_checks(solid, faces)
@@ -660,10 +724,11 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "blends": [{"where": b.where, "samples": b.samples, "data_error": b.data_rel,
                     "fit_deviation": b.fit["deviation"], "fit_tolerance": b.fit["tolerance"],
                     "poles": list(b.fit["poles"].shape[:2]),
-                    "closed": b.chain.closed} for b in blended],
+                    "closed": b.chain.closed, "pointwise": b.pointwise} for b in blended],
         "kept_occt_faces": kept,
         "trimlines": checks,
-        "mitres": _mitre_checks(solid, faces),
+        "mitres": _shared_edge_checks(solid, faces, False),
+        "junctions": _shared_edge_checks(solid, faces, True),
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
         "stage_seconds": {"occt_fillet": t_occt, "trimlines_solve_fit": t_solve - t0 - t_occt,

@@ -160,44 +160,44 @@ class RollingBallFace:
 
 class Section:
     """One member of a chain, run from along-parameter a_start to a_end, with the
-    across-parameters of side 1 and side 2 (cm: their mean, the mid-line)."""
+    across-parameters of side 1 and side 2 (cm: their mean, the mid-line) and the faces
+    it touches there (sides)."""
 
-    def __init__(self, rbf, a_start, a_end, c1, c2):
+    def __init__(self, rbf, a_start, a_end, c1, c2, sides):
         self.rbf, self.a_start, self.a_end, self.c1, self.c2 = rbf, a_start, a_end, c1, c2
         self.cm = 0.5 * (c1 + c2)
+        self.sides = sides
+
+
+def _same_sides(a, b):
+    return a[0].isSame(b[0]) and a[1].isSame(b[1])
 
 
 class FilletChain:
-    """Rolling-ball faces joined tangentially end to end: one blend.
+    """Rolling-ball faces joined tangentially end to end: one blend, or one per run.
 
-    Attributes: faces; ends: [(edge, neighbour face)]; closed; sides: (F1, F2), the
-    faces touched along side 1 and side 2; corner: None or why the chain is kept;
-    sections: the members in order with their direction (when corner is None).
+    Attributes: faces; ends: [(edge, neighbour face)]; closed; corner: None or why the
+    chain is kept; junctions: (False, False), see Run. When corner is None: sections,
+    the members in order with their direction; sides: (F1, F2), the faces touched
+    along side 1 and side 2 by the first section; runs: None when every section
+    touches the same two faces, else [Run] (the side changes face along the chain, as
+    a rounded rectangle's top edge runs along planes and cylinders).
     """
+
+    junctions = (False, False)
 
     def __init__(self, members):
         self.members = members
         self.faces = [m.face for m in members]
         self.ends = [x for m in members for x in m.ends]
         self.closed = not self.ends
+        self.runs = None
         self.corner = next((m.corner for m in members if m.corner), None)
         if self.corner is None:
             self.corner = self._order()
 
     def _order(self):
         """Order the members into sections; returns why this cannot be done, or None."""
-        first = self.members[0]
-        self.sides = (first.contacts[0][1], first.contacts[1][1])
-        cs = {}
-        for m in self.members:
-            n0, n1 = m.contacts[0][1], m.contacts[1][1]
-            if n0.isSame(self.sides[0]) and n1.isSame(self.sides[1]):
-                cs[id(m)] = m.across
-            elif n0.isSame(self.sides[1]) and n1.isSame(self.sides[0]):
-                cs[id(m)] = m.across[::-1]
-            else:
-                return ("the fillet chain runs along different faces on one side; one blend "
-                        "needs one face on each side")
         ends = {}  # (member, along end) -> (other member, its along end)
         for m in self.members:
             for e, nb in m.links:
@@ -206,17 +206,25 @@ class FilletChain:
                 if a is None or b is None:
                     return "it meets another fillet inside its range (a corner patch)"
                 ends[(id(m), a)] = (o, b)
-        start = first
-        a_in = first.range[0]
+        start = self.members[0]
+        a_in = start.range[0]
         if not self.closed:
             loose = [(m, a) for m in self.members for a in m.range if (id(m), a) not in ends]
             if len(loose) != 2:
                 return "the fillet chain has %d free ends instead of 2" % len(loose)
             start, a_in = loose[0]
         self.sections, m, a = [], start, a_in
+        side1 = None  # the previous section's contact edge on side 1
         while True:
             a_out = m.range[1] if a == m.range[0] else m.range[0]
-            self.sections.append(Section(m, a, a_out, *cs[id(m)]))
+            contacts, across = m.contacts, m.across
+            # side 1 continues where the previous section's side 1 ended
+            if side1 is not None and contacts[1][0].distToShape(side1)[0] < \
+                    contacts[0][0].distToShape(side1)[0]:
+                contacts, across = contacts[::-1], across[::-1]
+            side1 = contacts[0][0]
+            self.sections.append(Section(m, a, a_out, *across,
+                                         (contacts[0][1], contacts[1][1])))
             nxt = ends.get((id(m), a_out))
             if nxt is None or (nxt[0] is start and nxt[1] == a_in):
                 break
@@ -228,7 +236,45 @@ class FilletChain:
         if self.closed and len(self.members) > 1 and \
                 ends.get((id(m), self.sections[-1].a_end), (None,))[0] is not start:
             return "the fillet chain does not close up"
+        self.sides = self.sections[0].sides
+        if not all(_same_sides(x.sides, self.sides) for x in self.sections):
+            self.runs = self._runs()
         return None
+
+    def _runs(self):
+        """The sections grouped into runs along which both sides stay on one face each
+        (a closed chain's list rotated to start where a side changes face)."""
+        secs = self.sections
+        if self.closed:
+            k = next(i for i in range(len(secs))
+                     if not _same_sides(secs[i - 1].sides, secs[i].sides))
+            secs = secs[k:] + secs[:k]
+        groups = [[secs[0]]]
+        for x in secs[1:]:
+            if _same_sides(x.sides, groups[-1][-1].sides):
+                groups[-1].append(x)
+            else:
+                groups.append([x])
+        return [Run(self, g, (self.closed or i > 0, self.closed or i + 1 < len(groups)))
+                for i, g in enumerate(groups)]
+
+
+class Run:
+    """Consecutive sections of a FilletChain whose sides stay on one face each: one
+    blend of a chain whose side changes face. It has a FilletChain's attributes for an
+    open chain (faces, ends, closed = False, sides, sections, corner = None); chain:
+    the whole chain; junctions: (at start, at end), True where the run meets the next
+    run of the chain (across OCCT's cross-section between two of its faces) instead
+    of ending."""
+
+    closed, corner, runs = False, None, None
+
+    def __init__(self, chain, sections, junctions):
+        self.chain, self.sections, self.junctions = chain, sections, junctions
+        self.members = [x.rbf for x in sections]
+        self.faces = [m.face for m in self.members]
+        self.ends = [x for m in self.members for x in m.ends]
+        self.sides = sections[0].sides
 
 
 def chains(rbfs):

@@ -21,6 +21,13 @@ SHAPE_NAMES = {"C1": ("b", "c", "d"), "C2": ("gamma", "eta", "lambda", "rho"),
                "C3": ("a0", "a1", "a2", "a3", "a4")}
 
 
+# The pointwise blend: the kernel's ODE continuity rho S^(6) + eta S^(4) + lambda S'' = 0
+# with (rho, eta, lambda) = (1, 0, 0), the quintic Hermite in u of the C2 data at each v
+# on its own. It is the C2 PDE's own solution wherever the data are linear in v (a
+# straight edge), and it is as smooth in v as the data are.
+POINTWISE = ("ODE", (1.0, 0.0, 0.0))
+
+
 def shape_for(continuity, shape_params):
     """The shape parameters for continuity: as given when their number fits; all ones
     (the default of any length) becomes all ones of the right length. Raises
@@ -90,13 +97,16 @@ def v_length(rows0, rows1, periodic):
     return max(0.5 * (length(rows0) + length(rows1)) / speed, 1e-3)
 
 
-def spec_from_rows(rows0, rows1, continuity, shape_params, periodic, name):
+def spec_from_rows(rows0, rows1, continuity, shape_params, periodic, name, pointwise=False):
     """A C2Blend spec (dict) with sampled boundary rows.
 
     rows0/rows1: per sample, the list of rows from side_rows. Samples are uniform in
     v over [0, v_length] (see v_length); periodic data do not repeat the end point.
+    pointwise: the POINTWISE blend of C2 data instead of the PDE's (shape_params unused).
     """
     n = ROWS[continuity]
+    if pointwise:
+        continuity, shape_params = POINTWISE
     return {
         "name": name,
         "continuity": continuity,
