@@ -1070,24 +1070,47 @@ SIDE_CHANGES = {
 }
 
 
-@pytest.mark.parametrize("name", sorted(SIDE_CHANGES))
-def test_chain_whose_side_changes_face(name, radius=1.0):
+def _hermite_ends(n):
+    """Coefficients (numpy, increasing powers) of the two Hermite basis polynomials of
+    degree 2n - 1 that carry the value and the first derivative at u = 0: each has that
+    derivative 1 there, its other derivatives below order n zero at u = 0, and all of
+    them zero at u = 1. Solved from those 2n conditions."""
+    import numpy as np
+    deg = 2 * n - 1
+    rows = []
+    for at in (0.0, 1.0):
+        for k in range(n):  # k-th derivative of u^p at `at`
+            rows.append([math.factorial(p) / math.factorial(p - k) * at ** (p - k)
+                         if p >= k else 0.0 for p in range(deg + 1)])
+    inv = np.linalg.inv(np.array(rows))
+    return inv[:, 0], inv[:, 1]
+
+
+@pytest.mark.parametrize("name,continuity", [("rounded_box", "C2"), ("slot", "C2"),
+                                             ("rounded_box", "C1"), ("rounded_box", "C3")])
+def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
     """A rounded box's top outline and a slot's rim: the side runs along planes and
     cylinders, so the data are only C1 along the chain. Each face's run gets the
-    pointwise blend (the quintic Hermite of the data at each point of the trimline).
-    The walls are straight across the fillet and the top is flat, so every section
-    must be the straight 90 degree edge's quintic (_corner_area) in the coordinates a
-    (depth into the material from the wall) and b (depth below the top), swept along
-    the lines and revolved around the arcs' axes: checked at 11 x 11 points of every
-    blend face to 1e-7. The volume removed is that section swept: the straight length
-    times A, plus, by Pappus, pi (r A + g Q) per half turn, with Q the integral of a
-    over the section (g = +1 where the material lies outside the arc, -1 inside).
-    The runs meet G1 (as the wall's plane and cylinder do) and the trimlines are G2."""
+    pointwise blend (the Hermite polynomial in u of the data at each point of the
+    trimline). The walls are straight across the fillet and the top is flat, so every
+    section must be the straight 90 degree edge's Hermite curve, a(u) = R h0(u) -
+    s h1(u) and b(u) = a(1 - u) (s = R sqrt 2, degree 3, 5, 7 for C1, C2, C3), in the
+    coordinates a (depth into the material from the wall) and b (depth below the top),
+    swept along the lines and revolved around the arcs' axes: checked at 11 x 11 points
+    of every blend face to 1e-7. In C2 the volume removed is that section swept: the
+    straight length times A (_corner_area), plus, by Pappus, pi (r A + g Q) per half
+    turn, with Q the integral of a over the section (g = +1 where the material lies
+    outside the arc, -1 inside). The runs meet G1 (as the wall's plane and cylinder do)
+    and the trimlines are G2 (G1 in C1)."""
+    import numpy as np
     make, top, depth, straight, r, g = SIDE_CHANGES[name]
     s, names = make()
-    solid, rep = C2Blend.fillet_report(s, names, radius, label=name)
+    solid, rep = C2Blend.fillet_report(s, names, radius, continuity=continuity, label=name)
     assert_valid(solid)
-    assert_g2(rep)
+    if continuity == "C1":
+        assert rep["verdict"] == "G1" and all(t["g1"] < 1e-8 for t in rep["trimlines"])
+    else:
+        assert_g2(rep)
     assert not rep["kept_occt_faces"]
     faces = blend_faces(solid)
     assert len(faces) == len(rep["blends"]) == len(rep["junctions"]) >= 4
@@ -1095,13 +1118,12 @@ def test_chain_whose_side_changes_face(name, radius=1.0):
     assert all(j["verdict"] == "G1" and j["g1"] < 1e-8 for j in rep["junctions"])
     lines = ck.format_report(rep)
     assert sum("junction of the pointwise blends" in x for x in lines) == len(faces)
+    h0, h1 = _hermite_ends(trimlines.ROWS[continuity])
+
+    def a_of(u):
+        return radius * (np.polyval(h0[::-1], u) - math.sqrt(2.0) * np.polyval(h1[::-1], u))
+
     worst = 0.0
-    s2 = radius * math.sqrt(2.0)
-
-    def a_of(u):  # the quintic of _corner_area
-        return (radius * (1 - 10 * u**3 + 15 * u**4 - 6 * u**5)
-                - s2 * (u - 6 * u**3 + 8 * u**4 - 3 * u**5))
-
     for f in faces:
         srf = f.Surface
         v0, v1 = srf.bounds()[2:4]
@@ -1112,27 +1134,26 @@ def test_chain_whose_side_changes_face(name, radius=1.0):
                 p = srf.value(i / 10.0, v0 + (v1 - v0) * j / 10.0)
                 worst = max(worst, abs(depth(p) - a_of(u)), abs(top - p.z - a_of(1.0 - u)))
     assert worst < 1e-7
-    area = _corner_area(radius)
-    q = _quintic_integral(lambda a: 0.5 * a * a, radius)
-    removed = straight * area + 2.0 * math.pi * (r * area + g * q)
-    assert abs(s.Volume - solid.Volume - removed) < 1e-8 * removed
+    if continuity == "C2":
+        area = _corner_area(radius)
+        q = _quintic_integral(lambda a: 0.5 * a * a, radius)
+        removed = straight * area + 2.0 * math.pi * (r * area + g * q)
+        assert abs(s.Volume - solid.Volume - removed) < 1e-8 * removed
 
 
 def test_chain_whose_side_changes_face_kept_where_no_g2_blend_exists():
-    """Where the pointwise blend cannot be G2, OCCT's faces are kept and the reason
-    given. C1 (pointwise blends are C2 only). A top tilted by 0.1 degrees: the plane
-    meets each corner's cylinder in an ellipse, and the direction across the fillet on
-    the wall is no longer the cylinder's axis, so the cylinder curves across the
-    fillet where the plane next to it does not: no surface is G2 to both there."""
-    for kw, tilt, fragment in (({"continuity": "C1"}, 0.0, "implemented for C2 only"),
-                               ({}, 0.1, "where the side changes face")):
-        s, names = shapes.rounded_box(tilt)
-        solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Rounded", **kw)
-        assert_valid(solid)
-        assert rep["verdict"] == "G1" and not rep["blends"]
-        assert len(rep["kept_occt_faces"]) == 1
-        assert fragment in rep["kept_occt_faces"][0]["reason"]
-        assert rep["kept_occt_faces"][0]["where"].startswith("Rounded.Edge")
+    """A top tilted by 0.1 degrees: the plane meets each corner's cylinder in an
+    ellipse, and the direction across the fillet on the wall is no longer the
+    cylinder's axis, so the cylinder curves across the fillet where the plane next to
+    it does not: no surface is G2 to both there. OCCT's faces are kept, and the reason
+    given."""
+    s, names = shapes.rounded_box(0.1)
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Rounded")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"]
+    assert len(rep["kept_occt_faces"]) == 1
+    assert "where the side changes face" in rep["kept_occt_faces"][0]["reason"]
+    assert rep["kept_occt_faces"][0]["where"].startswith("Rounded.Edge")
 
 
 def test_chain_whose_side_changes_face_is_kept_whole(monkeypatch):

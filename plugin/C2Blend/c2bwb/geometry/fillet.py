@@ -157,7 +157,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                max_samples, fillet_faces, pointwise=False):
     """The PDE blend replacing one rolling-ball chain or run (see bspline.solve_sampled),
     from the exact contact of the ball of `radius`, traced past the ends that are
-    trimmed (ends.py); pointwise: trimlines.POINTWISE instead. Raises NotReplaced
+    trimmed (ends.py); pointwise: trimlines.pointwise_shape instead. Raises NotReplaced
     saying why it cannot."""
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces)
@@ -202,15 +202,11 @@ def solve_runs(chain, radius, where, continuity, tension, tol_rel, samples, max_
     boundary data are only C1 along the chain (a face's curvature jumps where it meets
     the next), which no v-coupled PDE blend reproduces (its series stall, and blends
     of the runs solved apart do not meet). Each run takes the pointwise blend
-    (trimlines.POINTWISE), whose section at a junction depends on the data there only:
-    the runs meet wherever both faces give the same data there. They do not where the
-    faces' normal curvatures across the fillet differ (a side face's edge crossing the
-    trimline obliquely): no surface is G2 to both there. Returns [Blended], each with
-    group set. Raises NotReplaced saying why the chain cannot be replaced."""
-    if continuity != "C2":
-        raise NotReplaced("the fillet chain runs along different faces on one side, so its "
-                          "data are only C1 along it; such chains are blended pointwise, "
-                          "which is implemented for C2 only (here %s)" % continuity)
+    (trimlines.pointwise_shape), whose section at a junction depends on the data there
+    only: the runs meet wherever both faces give the same data there. They do not where
+    the faces' normal curvatures across the fillet differ (a side face's edge crossing
+    the trimline obliquely): no surface is G2 to both there. Returns [Blended], each
+    with group set. Raises NotReplaced saying why the chain cannot be replaced."""
     blends = [solve_face(r, radius, where, continuity, None, tension, tol_rel, samples,
                          max_samples, fillet_faces, pointwise=True) for r in chain.runs]
     for a, b in zip(blends, blends[1:] + (blends[:1] if chain.closed else [])):

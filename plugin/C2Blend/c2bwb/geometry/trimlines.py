@@ -21,11 +21,14 @@ SHAPE_NAMES = {"C1": ("b", "c", "d"), "C2": ("gamma", "eta", "lambda", "rho"),
                "C3": ("a0", "a1", "a2", "a3", "a4")}
 
 
-# The pointwise blend: the kernel's ODE continuity rho S^(6) + eta S^(4) + lambda S'' = 0
-# with (rho, eta, lambda) = (1, 0, 0), the quintic Hermite in u of the C2 data at each v
-# on its own. It is the C2 PDE's own solution wherever the data are linear in v (a
-# straight edge), and it is as smooth in v as the data are.
-POINTWISE = ("ODE", (1.0, 0.0, 0.0))
+def pointwise_shape(continuity):
+    """Shape parameters of the pointwise blend: only the PDE's pure u-derivative term,
+    d^2n S / du^2n = 0 (n = 2, 3, 4 for C1, C2, C3), so each u-curve is the Hermite
+    polynomial of degree 2n - 1 of the data at its own v. It is the PDE's own solution
+    wherever the data are linear in v (a straight edge), and it is as smooth in v as
+    the data are."""
+    n = len(SHAPE_NAMES[continuity])
+    return (1.0,) + (0.0,) * (n - 1)
 
 
 def shape_for(continuity, shape_params):
@@ -102,11 +105,11 @@ def spec_from_rows(rows0, rows1, continuity, shape_params, periodic, name, point
 
     rows0/rows1: per sample, the list of rows from side_rows. Samples are uniform in
     v over [0, v_length] (see v_length); periodic data do not repeat the end point.
-    pointwise: the POINTWISE blend of C2 data instead of the PDE's (shape_params unused).
+    pointwise: the pointwise blend (pointwise_shape) instead of shape_params.
     """
     n = ROWS[continuity]
     if pointwise:
-        continuity, shape_params = POINTWISE
+        shape_params = pointwise_shape(continuity)
     return {
         "name": name,
         "continuity": continuity,
