@@ -1141,18 +1141,23 @@ def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
         assert abs(s.Volume - solid.Volume - removed) < 1e-8 * removed
 
 
-def test_chain_whose_side_changes_face_kept_where_no_g2_blend_exists():
-    """A top tilted by 0.1 degrees: the plane meets each corner's cylinder in an
+@pytest.mark.parametrize("tilt,fragment", [
+    (0.1, "where the side changes face"),
+    (3.0, "OCCT split its fillet at an angle to the fillet's cross-section")])
+def test_chain_whose_side_changes_face_kept_where_no_g2_blend_exists(tilt, fragment):
+    """A top tilted against the walls: the plane meets each corner's cylinder in an
     ellipse, and the direction across the fillet on the wall is no longer the
     cylinder's axis, so the cylinder curves across the fillet where the plane next to
-    it does not: no surface is G2 to both there. OCCT's faces are kept, and the reason
-    given."""
-    s, names = shapes.rounded_box(0.1)
+    it does not: no surface is G2 to both there (0.1 degrees). At 3 degrees OCCT's
+    faces meet along edges oblique to their sections, which a blend cannot follow
+    section by section (it was called a corner patch). OCCT's faces are kept, and the
+    reason given."""
+    s, names = shapes.rounded_box(tilt)
     solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Rounded")
     assert_valid(solid)
     assert rep["verdict"] == "G1" and not rep["blends"]
     assert len(rep["kept_occt_faces"]) == 1
-    assert "where the side changes face" in rep["kept_occt_faces"][0]["reason"]
+    assert fragment in rep["kept_occt_faces"][0]["reason"]
     assert rep["kept_occt_faces"][0]["where"].startswith("Rounded.Edge")
 
 

@@ -153,9 +153,17 @@ class RollingBallFace:
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
         lies, or None when it lies inside the range. On a periodic along-parameter the
         projection may return the end a period away (0 for 2 pi); _snap folds it back."""
-        s = self.face.Surface
-        a = _snap(s.parameter(midpoint(edge))[self.along], *self.range, _period(s, self.along))
+        a = self._along(midpoint(edge))
         return a if a in self.range else None
+
+    def _along(self, p):
+        s = self.face.Surface
+        return _snap(s.parameter(p)[self.along], *self.range, _period(s, self.along))
+
+    def oblique(self, edge):
+        """True when the link `edge` starts at an end of the along-range but does not
+        stay there: OCCT split the fillet across it at an angle."""
+        return sum(self._along(v.Point) in self.range for v in edge.Vertexes) == 1
 
 
 class Section:
@@ -203,6 +211,9 @@ class FilletChain:
             for e, nb in m.links:
                 o = next(x for x in self.members if x.face.isSame(nb))
                 a, b = m.along_at(e), o.along_at(e)
+                if (a is None or b is None) and (m.oblique(e) or o.oblique(e)):
+                    return ("OCCT split its fillet at an angle to the fillet's cross-section "
+                            "where it meets the next face of its chain")
                 if a is None or b is None:
                     return "it meets another fillet inside its range (a corner patch)"
                 ends[(id(m), a)] = (o, b)
