@@ -35,7 +35,7 @@ from . import ends
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces)
 from .surface import Frame, angle, frame_at_point, off_surface, project
-from .trimlines import ROWS, pair_rows, shape_for, spec_from_rows
+from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
 DATA_KEEP = 1e-6  # above this the boundary data are too rough for G2: keep OCCT's face
@@ -138,13 +138,13 @@ class Blended:
     """A rolling-ball chain (or a run of one: rollingball.Run) replaced by a PDE blend:
     surface, fit and data facts; ends: its ends (ends.ChainEnd); full_face: the whole
     surface; face: the part of it in the solid (full_face cut back at trimmed ends, see
-    ends.trim); probe: a point inside face; pointwise: True for the pointwise blend of
-    a run; group: the blends of all runs of its chain (None for a whole chain), which
-    are kept or replaced together."""
+    ends.trim); probe: a point inside face; group: None for a whole chain's blend, or
+    the pointwise blends of all runs of its chain (solve_runs), which are kept or
+    replaced together."""
 
-    def __init__(self, chain, ends, where, surface, fit, samples, data_rel, pointwise):
+    def __init__(self, chain, ends, where, surface, fit, samples, data_rel):
         self.chain, self.ends, self.where, self.surface, self.fit = chain, ends, where, surface, fit
-        self.samples, self.data_rel, self.pointwise, self.group = samples, data_rel, pointwise, None
+        self.samples, self.data_rel, self.group = samples, data_rel, None
         self.full_face = self.face = Part.Face(surface)
         self.surface_diag = self.full_face.BoundBox.DiagonalLength
         sec = chain.sections[len(chain.sections) // 2]
@@ -154,11 +154,10 @@ class Blended:
 
 
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
-               max_samples, fillet_faces, pointwise=False):
+               max_samples, fillet_faces):
     """The PDE blend replacing one rolling-ball chain or run (see bspline.solve_sampled),
     from the exact contact of the ball of `radius`, traced past the ends that are
-    trimmed (ends.py); pointwise: trimlines.pointwise_shape instead. Raises NotReplaced
-    saying why it cannot."""
+    trimmed (ends.py). Raises NotReplaced saying why it cannot."""
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces)
     try:
@@ -166,7 +165,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
         blend, n, err = solve_sampled(
             lambda k: sample_rows(chain, contact, k, nrows, tension, where),
             lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
-                                          "fillet " + where, pointwise),
+                                          "fillet " + where),
             where, samples, max_samples, DATA_REL)
     except ContactError as ex:
         raise NotReplaced(str(ex)) from None
@@ -184,7 +183,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
                           "%.3g (model units), cutting into the part or bulging out of it; a "
                           "lower tension (here %g) or other shape parameters keep it inside "
                           "the corner" % (over, tension))
-    b = Blended(chain, at_ends, where, surface, fit, n, err, pointwise)
+    b = Blended(chain, at_ends, where, surface, fit, n, err)
     v_ends = surface.bounds()[2:4]
     for end in at_ends:
         if end.across and not end.junction:
@@ -207,8 +206,9 @@ def solve_runs(chain, radius, where, continuity, tension, tol_rel, samples, max_
     the faces' normal curvatures across the fillet differ (a side face's edge crossing
     the trimline obliquely): no surface is G2 to both there. Returns [Blended], each
     with group set. Raises NotReplaced saying why the chain cannot be replaced."""
-    blends = [solve_face(r, radius, where, continuity, None, tension, tol_rel, samples,
-                         max_samples, fillet_faces, pointwise=True) for r in chain.runs]
+    shape = pointwise_shape(continuity)
+    blends = [solve_face(r, radius, where, continuity, shape, tension, tol_rel, samples,
+                         max_samples, fillet_faces) for r in chain.runs]
     for a, b in zip(blends, blends[1:] + (blends[:1] if chain.closed else [])):
         gap, turn = _junction(a.surface, b.surface)
         if gap > ON_FACE * max(a.fit["tolerance"], b.fit["tolerance"]):
@@ -720,7 +720,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "blends": [{"where": b.where, "samples": b.samples, "data_error": b.data_rel,
                     "fit_deviation": b.fit["deviation"], "fit_tolerance": b.fit["tolerance"],
                     "poles": list(b.fit["poles"].shape[:2]),
-                    "closed": b.chain.closed, "pointwise": b.pointwise} for b in blended],
+                    "closed": b.chain.closed, "pointwise": b.group is not None}
+                   for b in blended],
         "kept_occt_faces": kept,
         "trimlines": checks,
         "mitres": _shared_edge_checks(solid, faces, False),

@@ -266,25 +266,23 @@ class FilletChain:
                 groups[-1].append(x)
             else:
                 groups.append([x])
-        return [Run(self, g, (self.closed or i > 0, self.closed or i + 1 < len(groups)))
+        return [Run(g, (self.closed or i > 0, self.closed or i + 1 < len(groups)))
                 for i, g in enumerate(groups)]
 
 
 class Run:
     """Consecutive sections of a FilletChain whose sides stay on one face each: one
-    blend of a chain whose side changes face. It has a FilletChain's attributes for an
-    open chain (faces, ends, closed = False, sides, sections, corner = None); chain:
-    the whole chain; junctions: (at start, at end), True where the run meets the next
-    run of the chain (across OCCT's cross-section between two of its faces) instead
-    of ending."""
+    blend of a chain whose side changes face. It has the attributes of an open
+    FilletChain that a blend uses (sections, faces, ends, closed = False, sides);
+    junctions: (at start, at end), True where the run meets the next run of the chain
+    (across OCCT's cross-section between two of its faces) instead of ending."""
 
-    closed, corner, runs = False, None, None
+    closed = False
 
-    def __init__(self, chain, sections, junctions):
-        self.chain, self.sections, self.junctions = chain, sections, junctions
-        self.members = [x.rbf for x in sections]
-        self.faces = [m.face for m in self.members]
-        self.ends = [x for m in self.members for x in m.ends]
+    def __init__(self, sections, junctions):
+        self.sections, self.junctions = sections, junctions
+        self.faces = [x.rbf.face for x in sections]
+        self.ends = [e for x in sections for e in x.rbf.ends]
         self.sides = sections[0].sides
 
 

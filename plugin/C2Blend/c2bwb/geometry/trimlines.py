@@ -100,16 +100,13 @@ def v_length(rows0, rows1, periodic):
     return max(0.5 * (length(rows0) + length(rows1)) / speed, 1e-3)
 
 
-def spec_from_rows(rows0, rows1, continuity, shape_params, periodic, name, pointwise=False):
+def spec_from_rows(rows0, rows1, continuity, shape_params, periodic, name):
     """A C2Blend spec (dict) with sampled boundary rows.
 
     rows0/rows1: per sample, the list of rows from side_rows. Samples are uniform in
     v over [0, v_length] (see v_length); periodic data do not repeat the end point.
-    pointwise: the pointwise blend (pointwise_shape) instead of shape_params.
     """
     n = ROWS[continuity]
-    if pointwise:
-        shape_params = pointwise_shape(continuity)
     return {
         "name": name,
         "continuity": continuity,
