@@ -19,7 +19,7 @@
  * Curves are functions of (v, t) or uniform samples in v (the points of a digitised or
  * hand-drawn curve). Sampled curves use the kernel's sampled-data representation, as
  * sampled boundary rows do (c2b_vseries_project_samples(): FFT on periodic ranges,
- * cubic + DST-I sine series on open ones):
+ * end polynomial + DST-I sine series on open ones):
  *  - a datum all of whose curves (c1, c4 or controls, per the formulas above) are
  *    samples with one count is passed to the blend as samples, the same linear
  *    combination taken sample by sample; the blend then measures and reports the

@@ -86,7 +86,7 @@ static double datum_fn(void *ctx, double v, double t)
 }
 
 /* The exact second v-derivative is only needed for open trimlines whose data are
- * neither polynomials nor modes (cubic + DST), and symbolic derivatives of large
+ * neither polynomials nor modes (end polynomial + DST), and symbolic derivatives of large
  * expressions are expensive in libmatheval, so it is derived on first use. */
 static double datum_vv(void *ctx, double v, double t)
 {

@@ -2,10 +2,12 @@
 
 #include <fftw3.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "c2b_constants.h"
+#include "c2b_lsq.h"
 #include "c2b_poly.h"
 
 /* Structure checks use 33 points with an irrational-looking spacing, so that no
@@ -192,65 +194,86 @@ static c2b_status try_polynomial(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx,
     return C2B_OK;
 }
 
-/* Exact structure: f'' = beta f, detected from the three-term recurrence
- * f(s+h) + f(s-h) = 2 c f(s) on uniform samples (c = cos(omega h) or cosh(omega h)). */
+/* Highest degree of the polynomial that try_mode() accepts beside the pair of modes. */
+#define MODE_POLY_DEG 3
+
+/* Exact structure: a polynomial of degree < p (p <= MODE_POLY_DEG + 1) plus one pair of
+ * modes of one beta (cos/sin or the two exponentials), for the smallest p that fits.
+ * The p-th differences of the check points (uniform spacing h) remove the polynomial
+ * and keep the modes, whose neighbours satisfy z[i-1] + z[i+1] = 2 c z[i] with
+ * c = cos(w h) or cosh(w h). The amplitudes come from least squares on the check
+ * points and are verified at fresh points. */
 static c2b_status try_mode(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, double t,
                            const c2b_tolerances *tol, const double *xc, const double *yc,
                            double scale, c2b_vseries *out, int *found, c2b_error *err)
 {
     double L = dom->v1 - dom->v0, h = CHECK_STEP * L;
     *found = 0;
-    double num = 0, den = 0;
-    for (int i = 1; i < NCHECK - 1; i++) {
-        num += yc[i] * (yc[i - 1] + yc[i + 1]);
-        den += 2 * yc[i] * yc[i];
-    }
-    if (den == 0)
-        return C2B_OK;
-    double c = num / den, res = 0;
-    for (int i = 1; i < NCHECK - 1; i++)
-        res = fmax(res, fabs(yc[i - 1] + yc[i + 1] - 2 * c * yc[i]));
-    if (res > tol->structure_rel * scale || c < -1 || c == 1)
-        return C2B_OK;
-    int trig = c < 1;
-    double w = trig ? acos(c) / h : acosh(c) / h;
-    c2b_vfunc fa = {trig ? C2B_VF_COS : C2B_VF_EXPP, 0, w};
-    c2b_vfunc fb = {trig ? C2B_VF_SIN : C2B_VF_EXPM, 0, w};
-    /* Least squares for the two amplitudes on the check points. */
-    double aa = 0, ab = 0, bb = 0, ay = 0, by = 0;
-    for (int i = 0; i < NCHECK; i++) {
-        double va, vb;
-        c2b_vfunc_eval(&fa, xc[i] * L, L, 0, &va);
-        c2b_vfunc_eval(&fb, xc[i] * L, L, 0, &vb);
-        aa += va * va;
-        ab += va * vb;
-        bb += vb * vb;
-        ay += va * yc[i];
-        by += vb * yc[i];
-    }
-    double det = aa * bb - ab * ab;
-    if (!(fabs(det) > 1e-14 * aa * bb))
-        return C2B_OK;
-    double A = (ay * bb - by * ab) / det, B = (aa * by - ab * ay) / det;
-    /* Verify at fresh points. */
-    double e = 0;
-    for (int i = 0; i < 16; i++) {
-        double x = (i + 0.5) / 16.0, y, va, vb;
-        c2b_status st = sample(f, ctx, dom->v0 + x * L, t, &y, err);
+    for (int p = 0; p <= MODE_POLY_DEG + 1; p++) {
+        double z[NCHECK], num = 0, den = 0, res = 0;
+        int nz = NCHECK - p;
+        memcpy(z, yc, sizeof z);
+        for (int k = 0; k < p; k++)
+            for (int i = 0; i < NCHECK - 1 - k; i++)
+                z[i] = z[i + 1] - z[i];
+        for (int i = 1; i < nz - 1; i++) {
+            num += z[i] * (z[i - 1] + z[i + 1]);
+            den += 2 * z[i] * z[i];
+        }
+        if (den == 0)
+            continue;
+        double c = num / den;
+        for (int i = 1; i < nz - 1; i++)
+            res = fmax(res, fabs(z[i - 1] + z[i + 1] - 2 * c * z[i]));
+        if (res > tol->structure_rel * scale * (1 << p) || c < -1 || c == 1)
+            continue;
+        int trig = c < 1;
+        double w = trig ? acos(c) / h : acosh(c) / h;
+        c2b_vfunc fa = {trig ? C2B_VF_COS : C2B_VF_EXPP, 0, w};
+        c2b_vfunc fb = {trig ? C2B_VF_SIN : C2B_VF_EXPM, 0, w};
+        /* columns: x^m (m < p, x = s / L in [0, 1]), then the two modes */
+        int nc = p + 2, rank;
+        double A[NCHECK * (MODE_POLY_DEG + 3)], b[NCHECK], coef[MODE_POLY_DEG + 3];
+        for (int i = 0; i < NCHECK; i++) {
+            for (int m = 0; m < p; m++)
+                A[m * NCHECK + i] = pow(xc[i], m);
+            c2b_vfunc_eval(&fa, xc[i] * L, L, 0, &A[p * NCHECK + i]);
+            c2b_vfunc_eval(&fb, xc[i] * L, L, 0, &A[(p + 1) * NCHECK + i]);
+            b[i] = yc[i];
+        }
+        c2b_status st = c2b_lsq_solve(NCHECK, nc, A, b, 1e-13, coef, &rank, NULL,
+                                      "boundary data as polynomial and modes", err);
         if (st)
             return st;
-        c2b_vfunc_eval(&fa, x * L, L, 0, &va);
-        c2b_vfunc_eval(&fb, x * L, L, 0, &vb);
-        e = fmax(e, fabs(A * va + B * vb - y));
-    }
-    out->n_samples += 16;
-    if (e > 10 * tol->structure_rel * scale)
+        if (rank < nc)
+            continue;
+        /* Verify at fresh points. */
+        double e = 0;
+        for (int i = 0; i < 16; i++) {
+            double x = (i + 0.5) / 16.0, y, va, vb, poly = 0;
+            st = sample(f, ctx, dom->v0 + x * L, t, &y, err);
+            if (st)
+                return st;
+            c2b_vfunc_eval(&fa, x * L, L, 0, &va);
+            c2b_vfunc_eval(&fb, x * L, L, 0, &vb);
+            for (int m = p - 1; m >= 0; m--)
+                poly = poly * x + coef[m];
+            e = fmax(e, fabs(poly + coef[p] * va + coef[p + 1] * vb - y));
+        }
+        out->n_samples += 16;
+        if (e > 10 * tol->structure_rel * scale)
+            continue;
+        for (int m = 0; m < p; m++)
+            if (coef[m] != 0 && add_term(out, C2B_VF_POW, m, 0.0, coef[m] / pow(L, m)))
+                return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        if ((coef[p] != 0 && add_term(out, fa.kind, 0, w, coef[p])) ||
+            (coef[p + 1] != 0 && add_term(out, fb.kind, 0, w, coef[p + 1])))
+            return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+        out->method = C2B_VM_MODE;
+        out->err_abs = e;
+        *found = 1;
         return C2B_OK;
-    if ((A != 0 && add_term(out, fa.kind, 0, w, A)) || (B != 0 && add_term(out, fb.kind, 0, w, B)))
-        return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
-    out->method = C2B_VM_MODE;
-    out->err_abs = e;
-    *found = 1;
+    }
     return C2B_OK;
 }
 
@@ -385,14 +408,23 @@ done:
     return st;
 }
 
-/* Cubic in s matching value and second derivative at both ends (s-monomials). */
-static void end_cubic(double f0, double f1, double g0, double g1, double L, double *c)
+/* Degree of the end polynomial subtracted from open data before the sine series. */
+#define END_DEG 5
+
+/* Quintic in s (s-monomials c[0..5]) matching the value f, second derivative g and
+ * fourth derivative q at s = 0 (index 0) and s = L (index 1). The remainder then
+ * vanishes with its even derivatives up to the fourth at both ends, so its odd
+ * extension is C5 and its sine coefficients decay like k^-7: the series and its first
+ * derivatives converge fast up to the ends, where a blend meets its neighbour. */
+static void end_poly(const double f[2], const double g[2], const double q[2], double L,
+                     double *c)
 {
-    double C = g0 * L * L / 2, D = (g1 - g0) * L * L / 6, A = f0, B = f1 - A - C - D;
-    c[0] = A;
-    c[1] = B / L;
-    c[2] = C / (L * L);
-    c[3] = D / (L * L * L);
+    c[4] = q[0] / 24;
+    c[5] = (q[1] - q[0]) / (120 * L);
+    c[2] = g[0] / 2;
+    c[3] = (g[1] - g[0] - 12 * c[4] * L * L - 20 * c[5] * L * L * L) / (6 * L);
+    c[0] = f[0];
+    c[1] = (f[1] - f[0] - L * L * (c[2] + L * (c[3] + L * (c[4] + L * c[5])))) / L;
 }
 
 /* Sine coefficients b_k (k = 1..n-1) of interior remainder r[1..n-1]. */
@@ -405,13 +437,13 @@ static void dst_coefficients(double *r_interior, int n, double *b)
         b[k] /= n;
 }
 
-/* Append cubic + sine terms, dropping small sine amplitudes. */
-static int dst_terms(const double *cub, const double *b, int n, double L, double drop,
+/* Append end-polynomial + sine terms, dropping small sine amplitudes. */
+static int dst_terms(const double *poly, const double *b, int n, double L, double drop,
                      c2b_vseries *out)
 {
     out->n = 0;
-    for (int m = 0; m < 4; m++)
-        if (cub[m] != 0.0 && add_term(out, C2B_VF_POW, m, 0.0, cub[m]))
+    for (int m = 0; m <= END_DEG; m++)
+        if (poly[m] != 0.0 && add_term(out, C2B_VF_POW, m, 0.0, poly[m]))
             return -1;
     for (int k = 1; k < n; k++)
         if (fabs(b[k - 1]) > drop && add_term(out, C2B_VF_SIN, 0, C2B_PI * k / L, b[k - 1]))
@@ -441,12 +473,75 @@ static int sine_values(const c2b_vseries *s, double L, int n, double *vals)
     return 0;
 }
 
-/* One-sided fourth-order second derivative at the start of a uniform sequence. */
-static double second_derivative_end(const double *y, int stride, double h)
+/* Points of the one-sided difference stencils at each end: second derivatives (order
+ * 6; fewer points when fewer samples) and fourth derivatives (order 8). */
+#define END_STENCIL2 8
+#define END_STENCIL4 12
+
+/* Derivative `order` at the start of a uniform sequence of spacing h, from its first
+ * npts values (stride apart): the one-sided difference of the highest accuracy on
+ * npts points, order npts - order. Weights by Fornberg's recursion over the nodes
+ * 0, 1, ..., npts - 1 (Math. Comp. 51, 1988). */
+static double end_derivative(const double *y, int stride, int npts, int order, double h)
 {
-    return (15.0 / 4 * y[0] - 77.0 / 6 * y[stride] + 107.0 / 6 * y[2 * stride] -
-            13.0 * y[3 * stride] + 61.0 / 12 * y[4 * stride] - 5.0 / 6 * y[5 * stride]) /
-           (h * h);
+    double c[END_STENCIL4][5] = {{0}}, c1 = 1.0, c4 = 0.0;
+    c[0][0] = 1.0;
+    for (int i = 1; i < npts; i++) {
+        int mn = i < order ? i : order;
+        double c2 = 1.0, c5 = c4;
+        c4 = i;
+        for (int j = 0; j < i; j++) {
+            double c3 = i - j;
+            c2 *= c3;
+            if (j == i - 1) {
+                for (int k = mn; k >= 1; k--)
+                    c[i][k] = c1 * (k * c[i - 1][k - 1] - c5 * c[i - 1][k]) / c2;
+                c[i][0] = -c1 * c5 * c[i - 1][0] / c2;
+            }
+            for (int k = mn; k >= 1; k--)
+                c[j][k] = (c4 * c[j][k] - k * c[j][k - 1]) / c3;
+            c[j][0] = c4 * c[j][0] / c3;
+        }
+        c1 = c2;
+    }
+    double d = 0.0;
+    for (int i = 0; i < npts; i++)
+        d += c[i][order] * y[(ptrdiff_t)i * stride];
+    return d / pow(h, order);
+}
+
+/* Intervals of the range that the fourth-derivative stencil's spacing may not go below:
+ * on a finer grid rounding noise (amplified by h^-4) swamps it. */
+#define END_SPAN 64
+
+/* Fourth derivative at the start of n uniform samples y (stride apart, spacing h),
+ * or 0 where the samples do not resolve it: the estimates of spacings H and 2H,
+ * H = h max(1, (n - 1) / END_SPAN), must agree to 10% (their truncation errors
+ * differ by 256x), and 23 samples at least are needed for the two. Zero makes the end
+ * polynomial a cubic (a sine series decaying like k^-5). */
+static double end_fourth(const double *y, int stride, int n, double h)
+{
+    int k = (n - 1) / END_SPAN > 1 ? (n - 1) / END_SPAN : 1;
+    if (2 * k * (END_STENCIL4 - 1) > n - 1)
+        return 0.0;
+    double qa = end_derivative(y, k * stride, END_STENCIL4, 4, k * h);
+    double qb = end_derivative(y, 2 * k * stride, END_STENCIL4, 4, 2 * k * h);
+    return fabs(qa - qb) <= 0.1 * fabs(qa) ? qa : 0.0;
+}
+
+/* Second and fourth derivatives at both ends of n uniform samples y (stride apart,
+ * spacing h) into g and q; g is left as given when have_g. */
+static void end_derivatives(const double *y, int stride, int n, double h, int have_g,
+                            double g[2], double q[2])
+{
+    int npts = n < END_STENCIL2 ? n : END_STENCIL2;
+    const double *last = y + (ptrdiff_t)(n - 1) * stride;
+    if (!have_g) {
+        g[0] = end_derivative(y, stride, npts, 2, h);
+        g[1] = end_derivative(last, -stride, npts, 2, h);
+    }
+    q[0] = end_fourth(y, stride, n, h);
+    q[1] = end_fourth(last, -stride, n, h);
 }
 
 static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2, void *ctx,
@@ -459,7 +554,7 @@ static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2,
     double *y = malloc(cap * sizeof *y), *ny = malloc(cap * sizeof *ny);
     double *r = fftw_alloc_real(cap), *b = fftw_alloc_real(cap), *vals = fftw_alloc_real(cap);
     c2b_status st = C2B_OK;
-    double g0 = 0, g1 = 0, cub[4];
+    double g[2] = {0, 0}, q[2], poly[END_DEG + 1];
     if (!y || !ny || !r || !b || !vals) {
         st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
         goto done;
@@ -469,9 +564,9 @@ static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2,
     if (st)
         goto done;
     if (f2) {
-        st = sample(f2, ctx, dom->v0, t, &g0, err);
+        st = sample(f2, ctx, dom->v0, t, &g[0], err);
         if (!st)
-            st = sample(f2, ctx, dom->v1, t, &g1, err);
+            st = sample(f2, ctx, dom->v1, t, &g[1], err);
         if (st) {
             c2b_error_prefix(err, "second v-derivative: ");
             goto done;
@@ -481,15 +576,12 @@ static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2,
         double h = L / n, scale = 0;
         for (int i = 0; i <= n; i++)
             scale = fmax(scale, fabs(y[i]));
-        if (!f2) {
-            g0 = second_derivative_end(y, 1, h);
-            g1 = second_derivative_end(y + n, -1, h);
-        }
-        end_cubic(y[0], y[n], g0, g1, L, cub);
+        end_derivatives(y, 1, n + 1, h, f2 != NULL, g, q);
+        end_poly((double[2]){y[0], y[n]}, g, q, L, poly);
         for (int i = 1; i < n; i++)
-            r[i - 1] = y[i] - horner(cub, 3, i * h);
+            r[i - 1] = y[i] - horner(poly, END_DEG, i * h);
         dst_coefficients(r, n, b);
-        if (dst_terms(cub, b, n, L, tol->drop_rel * scale, out) ||
+        if (dst_terms(poly, b, n, L, tol->drop_rel * scale, out) ||
             sine_values(out, L, 2 * n, vals)) {
             st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
             goto done;
@@ -508,7 +600,7 @@ static c2b_status project_dst(const c2b_vdomain *dom, c2b_vt_fn f, c2b_vt_fn f2,
             }
             ny[j] = yj;
             scale = fmax(scale, fabs(yj));
-            e = fmax(e, fabs(horner(cub, 3, s) + vals[j - 1] - yj));
+            e = fmax(e, fabs(horner(poly, END_DEG, s) + vals[j - 1] - yj));
         }
         ny[2 * n] = y[n];
         e = fmax(e, offgrid_error(out, dom, xc, yc));
@@ -610,19 +702,18 @@ static c2b_status samples_series(const c2b_vdomain *dom, const double *samples, 
         return st;
     }
     int iv = n - 1;
-    double h = L / iv, cub[4];
-    double g0 = second_derivative_end(samples, stride, h);
-    double g1 = second_derivative_end(samples + (size_t)iv * (size_t)stride, -stride, h);
-    end_cubic(samples[0], samples[(size_t)iv * (size_t)stride], g0, g1, L, cub);
+    double h = L / iv, g[2], q[2], poly[END_DEG + 1];
+    end_derivatives(samples, stride, n, h, 0, g, q);
+    end_poly((double[2]){samples[0], samples[(size_t)iv * (size_t)stride]}, g, q, L, poly);
     double *r = fftw_alloc_real((size_t)n), *b = fftw_alloc_real((size_t)n);
     if (!r || !b) {
         st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
     } else {
         for (int i = 1; i < iv; i++)
-            r[i - 1] = samples[(size_t)i * (size_t)stride] - horner(cub, 3, i * h);
+            r[i - 1] = samples[(size_t)i * (size_t)stride] - horner(poly, END_DEG, i * h);
         if (iv > 1)
             dst_coefficients(r, iv, b);
-        if (dst_terms(cub, b, iv, L, drop, out))
+        if (dst_terms(poly, b, iv, L, drop, out))
             st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
         out->method = C2B_VM_DST;
     }

@@ -45,9 +45,9 @@ typedef struct c2b_vterm {
 typedef enum c2b_vmethod {
     C2B_VM_ZERO = 0,    /**< identically zero on the check points */
     C2B_VM_POLY = 1,    /**< polynomial in v, exact */
-    C2B_VM_MODE = 2,    /**< f'' = beta f (differential property), closed form */
+    C2B_VM_MODE = 2,    /**< f'' = beta f (differential property) plus a cubic, closed form */
     C2B_VM_FFT = 3,     /**< periodic: real FFT, truncated */
-    C2B_VM_DST = 4      /**< open: cubic + sine series (DST-I), truncated */
+    C2B_VM_DST = 4      /**< open: end polynomial + sine series (DST-I), truncated */
 } c2b_vmethod;
 
 /** Name of a method ("zero", "polynomial", "mode", "fft", "dst"). */
@@ -90,9 +90,11 @@ typedef double (*c2b_vt_fn)(void *ctx, double v, double t);
 /**
  * Expand f(., t) over the domain. Tries, in order: zero; a polynomial of degree <=
  * tol->max_poly_degree (exact); on open domains the differential property
- * f'' = beta f (exact pair of modes); otherwise periodic data by real FFT and open
- * data by a cubic (matching f and f'' at both ends; f2 is the exact second
- * v-derivative, or NULL for one-sided finite differences) plus a DST-I sine
+ * f'' = beta f plus a polynomial of degree <= 3 (exact pair of modes and powers);
+ * otherwise periodic data by real FFT and open
+ * data by a quintic (matching f, f'' and, where the samples resolve it, f'''' at
+ * both ends; f2 is the exact second v-derivative, or NULL for one-sided finite
+ * differences; f'''' always comes from one-sided differences) plus a DST-I sine
  * series, doubling the samples until the error at the midpoints and at 33 points off
  * the dyadic grid (which an aliased mode cannot match) is below
  * tol->truncation_rel * scale or tol->max_samples is reached. The error actually

@@ -2,7 +2,7 @@
  * Input bytes: [continuity][flags][n][shape bytes x 5] then raw doubles, used as the
  * samples of every boundary datum (x, y, z interleaved, stride 3), NaN and Inf included.
  * Builds the problem directly (as c2b_spec.c does for sample rows), creates the blend
- * (c2b_vseries_project_samples: FFT or cubic + DST, leave-half-out error) and evaluates. */
+ * (c2b_vseries_project_samples: FFT or end polynomial + DST, leave-half-out error) and evaluates. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>

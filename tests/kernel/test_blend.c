@@ -300,7 +300,7 @@ static void test_sampled(void)
         double diff = 0;
         for (int i = 0; i < 5 * 3; i++)
             diff = fmax(diff, fabs(o1[i] - o2[i]));
-        check_le("open: analytic truncation error reaches 1e-11 (cubic + DST)", ea, 1e-11);
+        check_le("open: analytic truncation error reaches 1e-11 (end polynomial + DST)", ea, 1e-11);
         check_le("open: sampled vs analytic positions within 10x the reported sampled error", diff,
                  10 * es + 1e-12);
         check_le("open: 257 samples give 1e-7 (one-sided end derivatives)", es, 1e-7);
