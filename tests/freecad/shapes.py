@@ -1,6 +1,7 @@
 """The parts of the workbench tests, built with Part (no files), and a document
 fingerprint for checking that failed operations leave documents unchanged."""
 import hashlib
+import math
 
 import FreeCAD
 import Part
@@ -255,6 +256,19 @@ def rounded_box(tilt=0.0):
     top = max(s.Faces, key=lambda f: f.CenterOfMass.z)
     return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
                if any(e.isSame(x) for x in top.Edges)]
+
+
+def rounded_hexagon():
+    """A regular hexagonal prism (circumradius 10, height 10) whose six vertical edges
+    are rounded (OCCT's fillet, r = 2): its top outline runs along planes and 60 degree
+    arcs. Returns (solid, names of the top face's edges)."""
+    pts = [V(10 * math.cos(math.pi * k / 3), 10 * math.sin(math.pi * k / 3), 0)
+           for k in range(6)]
+    s = Part.Face(Part.makePolygon(pts + pts[:1])).extrude(V(0, 0, 10))
+    s = s.makeFillet(2.0, [e for e in s.Edges if e.BoundBox.ZLength > 1])
+    names = _edges_at(s, 10.0)
+    assert len(names) == 12, names
+    return s, names
 
 
 def slot_plate():

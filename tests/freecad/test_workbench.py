@@ -1060,10 +1060,29 @@ def _clamp(x, lo, hi):
 # (solid maker, top z, depth below the walls of a point, length of the straight
 # stretches, corner axis radius of the arcs' walls, +1 where the material is outside
 # that radius (a slot's round end) or -1 inside (a rounded corner))
+_HEX_SIDE = 2.0 * (5.0 * math.sqrt(3.0) - 2.0) / math.sqrt(3.0)
+_HEXAGON = [(_HEX_SIDE * math.cos(math.pi * k / 3), _HEX_SIDE * math.sin(math.pi * k / 3))
+            for k in range(6)]
+
+
+def _to_polygon(p, poly):
+    """Distance in the xy plane from p (outside the convex polygon poly) to poly."""
+    def to_segment(a, b):
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        t = min(1.0, max(0.0, ((p.x - a[0]) * dx + (p.y - a[1]) * dy) / (dx * dx + dy * dy)))
+        return math.hypot(p.x - a[0] - t * dx, p.y - a[1] - t * dy)
+    return min(to_segment(a, b) for a, b in zip(poly, poly[1:] + poly[:1]))
+
+
 SIDE_CHANGES = {
     "rounded_box": (shapes.rounded_box, 10.0,
                     lambda p: 3.0 - math.hypot(p.x - _clamp(p.x, 3, 17), p.y - _clamp(p.y, 3, 17)),
                     4 * 14.0, 3.0, -1),
+    # the rounded hexagon is the inner hexagon (apothem 10 cos 30 - 2, so circumradius
+    # and side 2 (5 sqrt 3 - 2) / sqrt 3) grown by the corner radius 2
+    "rounded_hexagon": (shapes.rounded_hexagon, 10.0,
+                        lambda p: 2.0 - _to_polygon(p, _HEXAGON),
+                        6 * _HEX_SIDE, 2.0, -1),
     "slot": (shapes.slot_plate, 5.0,
              lambda p: math.hypot(p.x - _clamp(p.x, 12, 28), p.y - 10) - 4.0,
              2 * 16.0, 4.0, 1),
@@ -1087,10 +1106,11 @@ def _hermite_ends(n):
 
 
 @pytest.mark.parametrize("name,continuity", [("rounded_box", "C2"), ("slot", "C2"),
+                                             ("rounded_hexagon", "C2"),
                                              ("rounded_box", "C1"), ("rounded_box", "C3")])
 def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
-    """A rounded box's top outline and a slot's rim: the side runs along planes and
-    cylinders, so the data are only C1 along the chain. Each face's run gets the
+    """A rounded box's and a rounded hexagon's top outlines and a slot's rim: the side
+    runs along planes and cylinders, so the data are only C1 along the chain. Each face's run gets the
     pointwise blend (the Hermite polynomial in u of the data at each point of the
     trimline). The walls are straight across the fillet and the top is flat, so every
     section must be the straight 90 degree edge's Hermite curve, a(u) = R h0(u) -
