@@ -1056,10 +1056,6 @@ def _clamp(x, lo, hi):
     return min(max(x, lo), hi)
 
 
-# Chains whose side changes face, with the closed-form removed volume (see the test):
-# (solid maker, top z, depth below the walls of a point, length of the straight
-# stretches, corner axis radius of the arcs' walls, +1 where the material is outside
-# that radius (a slot's round end) or -1 inside (a rounded corner))
 _HEX_SIDE = 2.0 * (5.0 * math.sqrt(3.0) - 2.0) / math.sqrt(3.0)
 _HEXAGON = [(_HEX_SIDE * math.cos(math.pi * k / 3), _HEX_SIDE * math.sin(math.pi * k / 3))
             for k in range(6)]
@@ -1074,6 +1070,10 @@ def _to_polygon(p, poly):
     return min(to_segment(a, b) for a, b in zip(poly, poly[1:] + poly[:1]))
 
 
+# Chains whose side changes face, with the closed-form removed volume (see the test):
+# (solid maker, top z, depth below the walls of a point, length of the straight
+# stretches, corner axis radius of the arcs' walls, +1 where the material is outside
+# that radius (a slot's round end) or -1 inside (a rounded corner))
 SIDE_CHANGES = {
     "rounded_box": (shapes.rounded_box, 10.0,
                     lambda p: 3.0 - math.hypot(p.x - _clamp(p.x, 3, 17), p.y - _clamp(p.y, 3, 17)),
@@ -1110,9 +1110,9 @@ def _hermite_ends(n):
                                              ("rounded_box", "C1"), ("rounded_box", "C3")])
 def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
     """A rounded box's and a rounded hexagon's top outlines and a slot's rim: the side
-    runs along planes and cylinders, so the data are only C1 along the chain. Each face's run gets the
-    pointwise blend (the Hermite polynomial in u of the data at each point of the
-    trimline). The walls are straight across the fillet and the top is flat, so every
+    runs along planes and cylinders, so the data are only C1 along the chain. Each
+    face's run gets the pointwise blend (the Hermite polynomial in u of the data at
+    each point of the trimline). The walls are straight across the fillet and the top is flat, so every
     section must be the straight 90 degree edge's Hermite curve, a(u) = R h0(u) -
     s h1(u) and b(u) = a(1 - u) (s = R sqrt 2, degree 3, 5, 7 for C1, C2, C3), in the
     coordinates a (depth into the material from the wall) and b (depth below the top),

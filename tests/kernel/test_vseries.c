@@ -102,6 +102,19 @@ static void test_structures(void)
     project("exp(cos 3v), periodic", fsmooth, NULL, per2, C2B_VM_FFT, 1e-13);
 }
 
+/* n uniform samples of f on the open range [0, len], expanded into s (initialised here,
+ * cleared by the caller); 1 on success. */
+static int expand_open(fn1 f, double len, int n, c2b_vseries *s)
+{
+    static double smp[4097];
+    c2b_vdomain d = {0, len, 0};
+    c2b_error err;
+    for (int i = 0; i < n; i++)
+        smp[i] = f(len * i / (n - 1));
+    memset(s, 0, sizeof *s);
+    return c2b_vseries_project_samples(&d, smp, 1, n, NULL, s, &err) == C2B_OK;
+}
+
 /* Samples of exp(cos 3v) on the open range [0, 2]: the reported error of n samples,
  * even and odd n, bounds the true error between samples (fresh points). */
 static void test_sample_error_estimate(void)
@@ -110,15 +123,10 @@ static void test_sample_error_estimate(void)
     static const int counts[] = {32, 33, 64};
     for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
         int n = counts[c];
-        double smp[64];
-        for (int i = 0; i < n; i++)
-            smp[i] = fsmooth(2.0 * i / (n - 1));
         c2b_vseries s;
-        memset(&s, 0, sizeof s);
-        c2b_error err;
         char what[160];
         snprintf(what, sizeof what, "%d samples (open range): expanded", n);
-        if (!check_true(what, c2b_vseries_project_samples(&d, smp, 1, n, NULL, &s, &err) == C2B_OK))
+        if (!check_true(what, expand_open(fsmooth, 2.0, n, &s)))
             continue;
         double te = true_error(&s, &d, fsmooth);
         snprintf(what, sizeof what, "%d samples (open range): reported error %.3g bounds the true %.3g",
@@ -132,18 +140,6 @@ static double fsmooth_v(double v) { return -3 * sin(3 * v) * exp(cos(3 * v)); }
 static double farc(double v) { return 2 * cos(1 + 0.943 * v); } /* a 60 degree arc, r = 2 */
 static double farc_v(double v) { return -1.886 * sin(1 + 0.943 * v); }
 static double fhigh(double v) { return sin(150 * v) + 0.5 * v; }
-
-/* Open samples of f on [0, len] expanded (n samples); NULL on failure. */
-static int expand_open(fn1 f, double len, int n, c2b_vseries *s)
-{
-    static double smp[4097];
-    c2b_vdomain d = {0, len, 0};
-    c2b_error err;
-    for (int i = 0; i < n; i++)
-        smp[i] = f(len * i / (n - 1));
-    memset(s, 0, sizeof *s);
-    return c2b_vseries_project_samples(&d, smp, 1, n, NULL, s, &err) == C2B_OK;
-}
 
 /* The slope at both ends of open sampled data, where a blend meets the next (a fillet
  * run along a rounded outline meets the straight run's blend there, G1 to 1e-8 rad).
