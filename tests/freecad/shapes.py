@@ -233,6 +233,22 @@ def spline_block():
     return s, names[0]
 
 
+def spline_prism():
+    """A block whose front wall is extruded from a cubic spline interpolating 7 points of
+    y = 3 sin(x / 5), x = 0, 5, ..., 30 (C2 at its 5 interior knots), 20 deep and 15
+    high. Returns (solid, name of the spline's top edge, the spline at z = 0)."""
+    bs = Part.BSplineCurve()
+    pts = [V(5.0 * k, 3.0 * math.sin(k), 0) for k in range(7)]
+    bs.interpolate(pts)
+    w = Part.Wire([bs.toShape(), Part.makeLine(pts[-1], V(30, 20, 0)),
+                   Part.makeLine(V(30, 20, 0), V(0, 20, 0)), Part.makeLine(V(0, 20, 0), pts[0])])
+    s = Part.Face(w).extrude(V(0, 0, 15))
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if isinstance(e.Curve, Part.BSplineCurve) and abs(e.BoundBox.ZMin - 15) < 1e-9]
+    assert len(names) == 1, names
+    return s, names[0], bs
+
+
 def _edges_at(s, z):
     """Names of the edges of s lying in the plane z (no vertical extent)."""
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
@@ -268,6 +284,30 @@ def rounded_hexagon():
     s = s.makeFillet(2.0, [e for e in s.Edges if e.BoundBox.ZLength > 1])
     names = _edges_at(s, 10.0)
     assert len(names) == 12, names
+    return s, names
+
+
+def ruled_rounded_loft():
+    """A ruled loft from a 20 x 14 rectangle with corners rounded at r = 3 (z = 0) to a
+    16 x 10 one rounded at r = 2 (z = 10). Returns (solid, names of the top face's
+    edges)."""
+    def outline(w, h, r, z):
+        x, y = w / 2 - r, h / 2 - r
+        centres = [V(x, -y, z), V(x, y, z), V(-x, y, z), V(-x, -y, z)]
+        segs = []
+        for k, c in enumerate(centres):
+            a = math.pi / 2 * (k - 1)
+            segs.append(Part.ArcOfCircle(Part.Circle(c, V(0, 0, 1), r), a, a + math.pi / 2)
+                        .toShape())
+            d = centres[(k + 1) % 4]
+            segs.append(Part.LineSegment(c + V(math.cos(a + math.pi / 2) * r,
+                                               math.sin(a + math.pi / 2) * r, 0),
+                                         d + V(math.cos(a + math.pi / 2) * r,
+                                               math.sin(a + math.pi / 2) * r, 0)).toShape())
+        return Part.Wire(segs)
+    s = Part.makeLoft([outline(20, 14, 3, 0), outline(16, 10, 2, 10)], True, True)
+    names = _edges_at(s, 10.0)
+    assert len(names) == 8, names
     return s, names
 
 

@@ -110,6 +110,7 @@ def test_cone_on_plate():
     assert_valid(solid)
     assert_g2(rep)
     assert not rep["kept_occt_faces"]
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
     occt, _ = occt_jump(s, [edge], 1.5)
     for r in occt["edges"]:
         assert abs(r["g2"] - 1 / 1.5) < 1e-9  # torus section 1/R against plane and cone line
@@ -844,6 +845,24 @@ def test_four_parallel_edges_and_a_corner():
     assert_valid(solid)
     assert rep["verdict"] == "G1" and rep["kept_occt_faces"] and not rep["blends"]
     assert all("corner" in k["reason"] or "fillet" in k["reason"] for k in rep["kept_occt_faces"])
+    assert rep["solid_check"] == ("OCCT's rolling-ball solid, unchanged: passes BRepCheck "
+                                  "and the BOP check")
+
+
+def test_a_returned_occt_solid_is_checked_as_our_own():
+    """When every chain is kept, the solid is OCCT's fillet as OCCT made it, which only
+    has to pass isValid(). It gets the check C2Blend's own solids must pass (BRepCheck
+    and the BOP argument check), and the report says what that finds. On a ruled loft
+    between rounded rectangles, OCCT's fillet has C0 geometry; the input has none."""
+    s, names = shapes.ruled_rounded_loft()
+    assert_valid(s)
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Loft")
+    assert solid.isValid() and not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    with pytest.raises(Exception, match="GeomAbs_C0"):
+        solid.check(True)
+    assert "the BOP check finds: Error in Edge: BOPAlgo GeomAbs_C0" in rep["solid_check"]
+    assert "input" not in rep["solid_check"]
+    assert ("solid: " + rep["solid_check"]) in C2Blend.format_report(rep).splitlines()
 
 
 def test_animation_driven_by_a_spreadsheet(tmp_path):
@@ -911,7 +930,8 @@ def test_c1_and_c3_fillets():
     assert rep["blends"][0]["closed"] and rep["blends"][0]["fit_deviation"] <= \
         rep["blends"][0]["fit_tolerance"]
     lines = C2Blend.format_report(rep).splitlines()
-    assert len(lines) == 2 and all(": G2 " in ln for ln in lines)
+    assert len(lines) == 3 and all(": G2 " in ln for ln in lines[:2])
+    assert lines[2] == "solid: passes BRepCheck and the BOP check"
     with pytest.raises(C2BlendError, match=r"C3 takes 5 shape parameters \(a0, a1, a2, a3, a4\)"):
         C2Blend.fillet(s, [edge], 2.0, continuity="C3", shape_params=(2, 1, 1, 1))
 
@@ -1105,6 +1125,34 @@ def _hermite_ends(n):
     return inv[:, 0], inv[:, 1]
 
 
+def _section_deviation(faces, top, depth, continuity, radius, where=lambda p: True):
+    """Largest deviation, at 11 x 11 points of each blend face's surface (those p with
+    where(p)), of the pointwise blend of an edge between a vertical wall and a flat top
+    from the straight 90 degree edge's Hermite curve: a(u) = R h0(u) - s h1(u) and
+    b(u) = a(1 - u) (s = R sqrt 2, degree 3, 5, 7 for C1, C2, C3), in the coordinates a
+    (depth(p), into the material from the wall) and b (depth below the top, at height
+    top)."""
+    import numpy as np
+    h0, h1 = _hermite_ends(trimlines.ROWS[continuity])
+
+    def a_of(u):
+        return radius * (np.polyval(h0[::-1], u) - math.sqrt(2.0) * np.polyval(h1[::-1], u))
+
+    worst = 0.0
+    for f in faces:
+        srf = f.Surface
+        v0, v1 = srf.bounds()[2:4]
+        on_top = abs(srf.value(0.0, 0.5 * (v0 + v1)).z - top) < 1e-7  # u = 0 on the top
+        for i in range(11):
+            u = i / 10.0 if on_top else 1.0 - i / 10.0
+            for j in range(11):
+                p = srf.value(i / 10.0, v0 + (v1 - v0) * j / 10.0)
+                if where(p):
+                    worst = max(worst, abs(depth(p) - a_of(u)),
+                                abs(top - p.z - a_of(1.0 - u)))
+    return worst
+
+
 @pytest.mark.parametrize("name,continuity", [("rounded_box", "C2"), ("slot", "C2"),
                                              ("rounded_hexagon", "C2"),
                                              ("rounded_box", "C1"), ("rounded_box", "C3")])
@@ -1122,7 +1170,6 @@ def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
     turn, with Q the integral of a over the section (g = +1 where the material lies
     outside the arc, -1 inside). The runs meet G1 (as the wall's plane and cylinder do)
     and the trimlines are G2 (G1 in C1)."""
-    import numpy as np
     make, top, depth, straight, r, g = SIDE_CHANGES[name]
     s, names = make()
     solid, rep = C2Blend.fillet_report(s, names, radius, continuity=continuity, label=name)
@@ -1137,23 +1184,8 @@ def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
     assert all(b["pointwise"] for b in rep["blends"])
     assert all(j["verdict"] == "G1" and j["g1"] < 1e-8 for j in rep["junctions"])
     lines = ck.format_report(rep)
-    assert sum("junction of the pointwise blends" in x for x in lines) == len(faces)
-    h0, h1 = _hermite_ends(trimlines.ROWS[continuity])
-
-    def a_of(u):
-        return radius * (np.polyval(h0[::-1], u) - math.sqrt(2.0) * np.polyval(h1[::-1], u))
-
-    worst = 0.0
-    for f in faces:
-        srf = f.Surface
-        v0, v1 = srf.bounds()[2:4]
-        on_top = abs(srf.value(0.0, 0.5 * (v0 + v1)).z - top) < 1e-7  # u = 0 on the top
-        for i in range(11):
-            u = i / 10.0 if on_top else 1.0 - i / 10.0
-            for j in range(11):
-                p = srf.value(i / 10.0, v0 + (v1 - v0) * j / 10.0)
-                worst = max(worst, abs(depth(p) - a_of(u)), abs(top - p.z - a_of(1.0 - u)))
-    assert worst < 1e-7
+    assert sum("junction of two pointwise blends" in x for x in lines) == len(faces)
+    assert _section_deviation(faces, top, depth, continuity, radius) < 1e-7
     if continuity == "C2":
         area = _corner_area(radius)
         q = _quintic_integral(lambda a: 0.5 * a * a, radius)
@@ -1161,8 +1193,41 @@ def test_chain_whose_side_changes_face(name, continuity, radius=1.0):
         assert abs(s.Volume - solid.Volume - removed) < 1e-8 * removed
 
 
+@pytest.mark.parametrize("continuity", ["C2", "C3"])
+def test_fillet_across_knot_lines(continuity, radius=2.0):
+    """A prism whose wall is a cubic spline through 7 points: it is only C2 at its 5
+    knots, where its curvature's derivative jumps, and so do the boundary data. One
+    blend's data then converge only algebraically (4e-6 with 1024 samples, too rough
+    for G2; OCCT's face was kept). The chain is cut where the exact contact crosses the
+    knot lines, and each piece (analytic data) gets the pointwise blend: 6 blends
+    meeting G1 at 5 junctions. The wall is vertical and the top flat, so every section
+    is the straight 90 degree edge's Hermite curve, with the depth into the material
+    measured by OCCT's distance from the point to the spline in plan."""
+    s, name, spline = shapes.spline_prism()
+    assert spline.Degree == 3 and spline.getMultiplicities()[1:-1] == [1] * 5
+    solid, rep = C2Blend.fillet_report(s, [name], radius, continuity=continuity,
+                                       label="Spline")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    faces = blend_faces(solid)
+    assert len(faces) == len(rep["blends"]) == 6 and len(rep["junctions"]) == 5
+    assert all(b["pointwise"] and b["data_error"] < 1e-8 for b in rep["blends"])
+    assert all(j["verdict"] in ("G1", "G2") and j["g1"] < 1e-8 for j in rep["junctions"])
+    wall = spline.toShape()
+
+    def depth(p):
+        return wall.distToShape(Part.Vertex(V(p.x, p.y, 0.0)))[0]
+
+    # the blends were traced past the end faces x = 0 and x = 30 and cut back; sections
+    # nearer the ends than 1.5 may have their foot on the wall beyond the spline's ends
+    # (at most depth 2 times sin 31 degrees, the spline's slope there, away)
+    assert _section_deviation(faces, 15.0, depth, continuity, radius,
+                              lambda p: 1.5 < p.x < 28.5) < 1e-7
+
+
 @pytest.mark.parametrize("tilt,fragment", [
-    (0.1, "where the side changes face"),
+    (0.1, "where a side changes face or crosses a knot line, the "),
     (3.0, "OCCT split its fillet at an angle to the fillet's cross-section")])
 def test_chain_whose_side_changes_face_kept_where_no_g2_blend_exists(tilt, fragment):
     """A top tilted against the walls: the plane meets each corner's cylinder in an

@@ -6,6 +6,7 @@ Correspondence: both trimlines are parametrised by normalised arc length; closed
 trimlines are aligned (start of the second at the point nearest the start of the
 first) and oriented alike, open ones are matched end to end.
 """
+import math
 import time
 
 import Part
@@ -103,7 +104,7 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
         rows_at,
         lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, t1.closed,
                                       "blend " + where),
-        where, samples, max_samples, DATA_REL)
+        where, samples, max_samples, DATA_REL, math.inf)
     surface, fit = fit_surface(kernel, tol_rel, where)
     face = Part.Face(surface)
     v0, v1 = surface.bounds()[2:4]

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """From a C2Blend spec to a FreeCAD B-spline surface, through the c2blend kernel.
 Kernel errors become C2BlendError naming `where` (object and edge)."""
+import math
+
 import Part
 
 import c2blend
@@ -57,15 +59,23 @@ def data_error(blend):
     return worst
 
 
-def solve_sampled(rows_at, spec_of, where, samples, max_samples, target):
+def solve_sampled(rows_at, spec_of, where, samples, max_samples, target, hopeless):
     """Sample boundary rows (rows_at(n) -> (rows0, rows1)), doubling n from `samples`
     until the kernel's measured data error is below `target`, stops improving (less
-    than 2x per doubling), or n reaches max_samples. Returns (blend, n, error)."""
-    n, prev = samples, None
+    than 2x per doubling), or n reaches max_samples. It also stops where convergence is
+    algebraic (the gain per doubling no longer grows, as where data that are not smooth
+    cross a spline's knot) and, at the last gain, the error would still be above
+    `hopeless` at max_samples. Returns (blend, n, error)."""
+    n, errs = samples, []
     while True:
         rows0, rows1 = rows_at(n)
         blend = solve(spec_of(rows0, rows1), where)
         err = data_error(blend)
-        if err <= target or 2 * n > max_samples or (prev is not None and err > 0.5 * prev):
+        errs.append(err)
+        if err <= target or 2 * n > max_samples or (len(errs) > 1 and err > 0.5 * errs[-2]):
             return blend, n, err
-        n, prev = 2 * n, err
+        if len(errs) > 2:
+            gain, before = errs[-2] / err, errs[-3] / errs[-2]
+            if gain <= before and err / gain ** math.log2(max_samples / n) > hopeless:
+                return blend, n, err
+        n *= 2

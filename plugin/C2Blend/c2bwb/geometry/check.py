@@ -154,11 +154,13 @@ def format_report(rep):
                      "(not a trimline, not in the verdict): %s, normals %.3g rad apart"
                      % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"]))
     for r in rep.get("junctions", []):
-        lines.append("%s (%s): junction of the pointwise blends where the side changes face "
-                     "(not a trimline, not in the verdict): %s, as the faces there; normals "
-                     "%.3g rad apart, curvature jump %.3g" % (r["edge"], "/".join(r["faces"]),
-                                                           r["verdict"], r["g1"], r["g2"]))
+        lines.append("%s (%s): junction of two pointwise blends, where a side changes face "
+                     "or crosses a knot line (not a trimline, not in the verdict): %s, as "
+                     "the faces there; normals %.3g rad apart, curvature jump %.3g"
+                     % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"], r["g2"]))
     for k in rep.get("kept_occt_faces", []):
         lines.append("%s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
                      % (k["where"], k["reason"]))
+    if "solid_check" in rep:
+        lines.append("solid: %s" % rep["solid_check"])
     return lines

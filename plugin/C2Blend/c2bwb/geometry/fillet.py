@@ -15,7 +15,9 @@ blend's boundary edges (an end face grows by the region between the corner and t
 blend's end section where the fillet uncovers its surface), and everything is sewn into
 a solid and checked (BRepCheck, and continuity along every trimline). A chain whose side
 changes face (a rounded outline) has data only C1 along it: each run along one pair of
-faces gets the pointwise blend, and the runs meet at junctions (solve_runs). Kept as
+faces gets the pointwise blend, and the runs meet at junctions (solve_runs). So do the
+pieces of a chain whose data are too rough because the contact crosses knot lines of
+a side face (solve_chain, knots.py). Kept as
 OCCT made them, and reported as such with the reason (no G2 claim is made there):
 corner patches where three fillets meet at a vertex, chains whose side changes face
 where no blend is G2 to both faces, and chains whose exact contact, blend, fit, cut or
@@ -32,6 +34,7 @@ from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
 from . import ends
+from .knots import split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces)
 from .surface import Frame, angle, frame_at_point, off_surface, project
@@ -44,6 +47,12 @@ ON_FACE = 10.0  # an end curve lies on its end face within this many fit toleran
 
 class NotReplaced(Exception):
     """This chain cannot be replaced by a G2 blend; the message says why."""
+
+
+class RoughData(NotReplaced):
+    """The boundary data sampled along the chain converge too slowly for a G2 blend, or
+    its B-spline fit cannot reach the tolerance: both happen where the data are not
+    smooth along the chain (solve_chain)."""
 
 
 class Unassembled(Exception):
@@ -166,17 +175,17 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
             lambda k: sample_rows(chain, contact, k, nrows, tension, where),
             lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
                                           "fillet " + where),
-            where, samples, max_samples, DATA_REL)
+            where, samples, max_samples, DATA_REL, DATA_KEEP)
     except ContactError as ex:
         raise NotReplaced(str(ex)) from None
     if err > DATA_KEEP:
-        raise NotReplaced("the boundary data sampled along the exact contact converge only "
-                          "to %.1e (relative) with %d samples, too rough for an exact G2 "
-                          "blend" % (err, n))
+        raise RoughData("the boundary data sampled along the exact contact converge only "
+                        "to %.1e (relative) with %d samples, too rough for an exact G2 "
+                        "blend" % (err, n))
     try:
         surface, fit = fit_surface(blend, tol_rel, where)
     except C2BlendError as ex:  # the B-spline fit's limits, not the user's input
-        raise NotReplaced(ex.message) from None
+        raise RoughData(ex.message) from None
     over = overshoot(surface, chain.sides, contact.signs)
     if over > ON_FACE * fit["tolerance"]:
         raise NotReplaced("the blend overshoots: it crosses the surface of a face it joins by "
@@ -195,29 +204,60 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     return b
 
 
-def solve_runs(chain, radius, where, continuity, tension, tol_rel, samples, max_samples,
-               fillet_faces):
-    """The blends of a chain whose side changes face (chain.runs), one per run. Its
-    boundary data are only C1 along the chain (a face's curvature jumps where it meets
-    the next), which no v-coupled PDE blend reproduces (its series stall, and blends
-    of the runs solved apart do not meet). Each run takes the pointwise blend
-    (trimlines.pointwise_shape), whose section at a junction depends on the data there
-    only: the runs meet wherever both faces give the same data there. They do not where
-    the faces' normal curvatures across the fillet differ (a side face's edge crossing
-    the trimline obliquely): no surface is G2 to both there. Returns [Blended], each
-    with group set. Raises NotReplaced saying why the chain cannot be replaced."""
+def solve_chain(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
+                max_samples, fillet_faces):
+    """The blends replacing a chain: one PDE blend (solve_face), or one pointwise blend
+    per run where the side changes face (solve_runs). Where the data are too rough
+    because the contact crosses knot lines of a side face, the chain (or its runs) is
+    cut there (knots.split_at_knots) and each piece gets the pointwise blend. Returns
+    [Blended]. Raises NotReplaced saying why the chain cannot be replaced."""
+    try:
+        if chain.runs:
+            return solve_runs(chain.runs, chain.closed, radius, where, continuity, tension,
+                              tol_rel, samples, max_samples, fillet_faces)
+        return [solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
+                           samples, max_samples, fillet_faces)]
+    except RoughData as rough:
+        try:
+            runs = split_at_knots(chain, radius)
+        except ContactError as ex:
+            raise NotReplaced("%s; %s" % (rough, ex)) from None
+        if runs is None:
+            raise
+        try:
+            return solve_runs(runs, chain.closed, radius, where, continuity, tension,
+                              tol_rel, samples, max_samples, fillet_faces)
+        except NotReplaced as ex:
+            raise NotReplaced("%s; cut into %d pieces where the contact crosses knot lines "
+                              "of its faces, %s" % (rough, len(runs), ex)) from None
+
+
+def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, samples,
+               max_samples, fillet_faces):
+    """The blends of a chain's runs (rollingball.Run), one per run: where the side changes
+    face or the contact crosses a knot line of a face. The boundary data there are only
+    C1 or C2 along the chain (a face's curvature, or its derivative, jumps), which no
+    v-coupled PDE blend reproduces (its series stall, and blends of the runs solved apart
+    do not meet). Each run takes the pointwise blend (trimlines.pointwise_shape), whose
+    section at a junction depends on the data there only: the runs meet wherever both
+    sides give the same data there. They do not where the faces' normal curvatures
+    across the fillet differ (a side face's edge crossing the trimline obliquely): no
+    surface is G2 to both there. closed: the last run meets the first. Returns
+    [Blended], each with group set. Raises NotReplaced saying why the chain cannot be
+    replaced."""
     shape = pointwise_shape(continuity)
     blends = [solve_face(r, radius, where, continuity, shape, tension, tol_rel, samples,
-                         max_samples, fillet_faces) for r in chain.runs]
-    for a, b in zip(blends, blends[1:] + (blends[:1] if chain.closed else [])):
+                         max_samples, fillet_faces) for r in runs]
+    for a, b in zip(blends, blends[1:] + (blends[:1] if closed else [])):
         gap, turn = _junction(a.surface, b.surface)
         if gap > ON_FACE * max(a.fit["tolerance"], b.fit["tolerance"]):
-            raise NotReplaced("where the side changes face, the faces' curvatures across the "
-                              "fillet differ, so no blend is G2 to both there (the blends of "
-                              "the two faces' runs would be %.1e apart)" % gap)
+            raise NotReplaced("where a side changes face or crosses a knot line, the faces' "
+                              "curvatures across the fillet differ, so no blend is G2 to "
+                              "both there (the blends of the two runs would be %.1e apart)"
+                              % gap)
         if turn > ck.TOL_G1:
-            raise NotReplaced("where the side changes face, the blends of the two runs would "
-                              "meet at a crease of %.1e rad" % turn)
+            raise NotReplaced("where a side changes face or crosses a knot line, the blends "
+                              "of the two runs would meet at a crease of %.1e rad" % turn)
     for b in blends:
         b.group = blends
     return blends
@@ -534,17 +574,42 @@ def assemble(shape, result, blended, fillet_faces, where):
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
     old = {e.hashCode() for e in result.Edges}
     _update_tolerances([e for e in solid.Edges if e.hashCode() not in old])
-    try:
-        solid.check(True)  # BRepCheck_Analyzer, as isValid(), but says what is wrong
-    except Exception as ex:
-        msg = "the filleted solid is not valid after sewing (BRepCheck: %s)" % str(ex).strip()
-        try:
-            shape.check(True)
-        except Exception as orig:
+    problems = _solid_problems(solid)
+    if problems:
+        msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
+               % problems)
+        orig = _solid_problems(shape)
+        if orig:
             msg += ("; the input solid already fails that check (%s), so repair or "
-                    "rebuild it first" % str(orig).strip())
-        raise C2BlendError(msg, where, "validity") from None
+                    "rebuild it first" % orig)
+        raise C2BlendError(msg, where, "validity")
     return solid
+
+
+def _solid_problems(solid):
+    """What BRepCheck and OCCT's BOP argument check (check(True)) find wrong with solid,
+    one line, each finding with its count; None when both pass."""
+    try:
+        solid.check(True)
+    except Exception as ex:
+        found = [line.strip() for line in str(ex).splitlines() if line.strip()]
+        found = found[1:] if len(found) > 1 and found[0].endswith(":") else found
+        return "; ".join("%s (%d)" % (f, found.count(f)) if found.count(f) > 1 else f
+                         for f in dict.fromkeys(found))
+    return None
+
+
+def _occt_result_check(shape, result):
+    """The report's line on a solid returned as OCCT's fillet made it (every chain kept):
+    isValid() holds (_rolling_ball), but OCCT's own fillet is not checked further, and
+    can fail the BOP argument check that C2Blend's own solids pass."""
+    problems = _solid_problems(result)
+    if problems is None:
+        return "OCCT's rolling-ball solid, unchanged: passes BRepCheck and the BOP check"
+    return ("OCCT's rolling-ball solid, unchanged (FreeCAD's Fillet gives the same): it "
+            "passes isValid(), but the BOP check finds: %s%s; Boolean operations on it "
+            "may fail" % (problems, "" if _solid_problems(shape) is None
+                          else ", and so does the input solid"))
 
 
 def _where(label, names, chains_):
@@ -685,13 +750,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             kept.append({"where": where, "reason": chain.corner})
             continue
         try:
-            if chain.runs:
-                blended += solve_runs(chain, radius, where, continuity, tension, tol_rel,
-                                      samples, max_samples, fillet_faces)
-            else:
-                blended.append(solve_face(chain, radius, where, continuity, shape_params,
-                                          tension, tol_rel, samples, max_samples,
-                                          fillet_faces))
+            blended += solve_chain(chain, radius, where, continuity, shape_params, tension,
+                                   tol_rel, samples, max_samples, fillet_faces)
         except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
     t_solve = None
@@ -723,6 +783,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                     "closed": b.chain.closed, "pointwise": b.group is not None}
                    for b in blended],
         "kept_occt_faces": kept,
+        "solid_check": _occt_result_check(shape, solid) if not blended else
+        "passes BRepCheck and the BOP check",
         "trimlines": checks,
         "mitres": _shared_edge_checks(solid, faces, False),
         "junctions": _shared_edge_checks(solid, faces, True),

@@ -275,14 +275,16 @@ class Run:
     blend of a chain whose side changes face. It has the attributes of an open
     FilletChain that a blend uses (sections, faces, ends, closed = False, sides);
     junctions: (at start, at end), True where the run meets the next run of the chain
-    (across OCCT's cross-section between two of its faces) instead of ending."""
+    (across OCCT's cross-section between two of its faces, or where knots.split_at_knots
+    cut it) instead of ending; ends: the end edges of its sections' faces unless given
+    (a run cut from inside a face has only those at the chain's ends)."""
 
     closed = False
 
-    def __init__(self, sections, junctions):
+    def __init__(self, sections, junctions, ends=None):
         self.sections, self.junctions = sections, junctions
         self.faces = [x.rbf.face for x in sections]
-        self.ends = [e for x in sections for e in x.rbf.ends]
+        self.ends = [e for x in sections for e in x.rbf.ends] if ends is None else ends
         self.sides = sections[0].sides
 
 
