@@ -54,6 +54,13 @@ def _crossed(x0, x1, knots, period):
     return out
 
 
+def _on_knot(x, knots, period, near):
+    """True when parameter x lies within near of a knot (or of its copy a whole number
+    of periods away)."""
+    return any(abs(x - k - (period * round((x - k) / period) if period else 0.0)) <= near
+               for k in knots)
+
+
 def _root(f, a0, a1):
     """a in [a0, a1] with f(a) = 0, where f(a0) and f(a1) differ in sign: the Illinois
     variant of the false position, to rounding."""
@@ -100,9 +107,7 @@ def crossings(contact, k):
                 continue
             q = 2 * side + j
             near = 1e-9 * (period or max(knots) - min(knots) or 1.0)
-            on = on or any(abs(x_start[q] - kn - (period * round((x_start[q] - kn) / period)
-                                                  if period else 0.0)) <= near
-                           for kn in knots)
+            on = on or _on_knot(x_start[q], knots, period, near)
             for (a0, x0), (a1, x1) in zip(pts, pts[1:]):
                 if period and abs(x1[q] - x0[q]) > 0.5 * period:
                     continue  # a projection a period away, not a crossing
@@ -132,21 +137,21 @@ def split_at_knots(chain, radius):
     closed chain's runs start at a cut. Raises contact.ContactError."""
     parts = chain.runs or [chain]
     items = []  # (Section, True where a junction precedes it)
-    ends = []  # per part: its end edges
+    ends = []  # the end edges of the parts
     cut = False
     for p in parts:
         contact = Contact(p, radius)
-        ends.append(list(p.ends))
+        ends += p.ends
         for k, sec in enumerate(p.sections):
             on, cuts = crossings(contact, k)
             bounds = [sec.a_start] + cuts + [sec.a_end]
             first = not chain.closed and p is parts[0] and k == 0  # the chain's start
+            # a run of a chain whose side changes face starts here
+            run_start = k == 0 and bool(chain.runs)
             cut = cut or bool(cuts) or on and not first
             for i in range(len(bounds) - 1):
-                # a junction before it: at a cut, at a knot line, or where a run of a
-                # chain whose side changes face starts
-                junction = i > 0 or not first and (on or k == 0 and p is not parts[0]
-                                                   or k == 0 and bool(chain.runs))
+                # a junction before it: at a cut, at a knot line, or where a run starts
+                junction = i > 0 or not first and (on or run_start)
                 items.append((Section(sec.rbf, bounds[i], bounds[i + 1], sec.c1, sec.c2,
                                       sec.sides), junction))
     if not cut:
@@ -167,7 +172,7 @@ def split_at_knots(chain, radius):
         stop = runs[-1].sections[-1]
         p0 = Part.Vertex(start.rbf.point(start.a_start, start.cm))
         p1 = Part.Vertex(stop.rbf.point(stop.a_end, stop.cm))
-        for e, nb in (x for es in ends for x in es):
+        for e, nb in ends:
             near = runs[0] if e.distToShape(p0)[0] <= e.distToShape(p1)[0] else runs[-1]
             near.ends.append((e, nb))
     return runs
