@@ -758,7 +758,7 @@ def resonant_rho(shape, edge):
     from c2bwb.geometry.rollingball import RollingBallFace, chains, new_faces
     from c2bwb.geometry.contact import Contact
     ff = new_faces(shape, res)
-    chain, = chains([RollingBallFace(res, f, ff) for f in ff])
+    (chain,), _ = chains([RollingBallFace(res, f, ff) for f in ff])
     rows0, rows1 = fl.sample_rows(chain, Contact(chain, 2.0), 32, 3, 1.0, "test")
     return -trimlines.v_length(rows0, rows1, True) ** 6
 
@@ -827,10 +827,8 @@ def test_occt_fillet_reports_g1_jump():
     assert all(abs(r["g2"] - 0.4) < 1e-9 and r["g1"] < 1e-8 for r in rep["edges"])
 
 
-def test_four_parallel_edges_and_a_corner():
-    """Four vertical box edges: four G2 blends sharing the top and bottom faces. The three
-    edges meeting at the vertex (0, 0, 10): OCCT's corner patch is kept and the report
-    says G1."""
+def test_four_parallel_edges():
+    """Four vertical box edges: four G2 blends sharing the top and bottom faces."""
     box = shapes.box()
     vertical = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
                 if abs(e.tangentAt(e.FirstParameter).z) > 0.99]
@@ -838,15 +836,103 @@ def test_four_parallel_edges_and_a_corner():
     assert_valid(solid)
     assert_g2(rep)
     assert len(rep["blends"]) == 4 and len(rep["trimlines"]) == 8
-    corner = ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
-              if min((v.Point - V(0, 0, 10)).Length for v in e.Vertexes) < 1e-9]
-    assert len(corner) == 3
+
+
+def _corner_edges(box, vertex):
+    return ["Edge%d" % (i + 1) for i, e in enumerate(box.Edges)
+            if min((v.Point - vertex).Length for v in e.Vertexes) < 1e-9]
+
+
+def assert_corner_filled(rep, n_blends, n_corners):
+    """Every trimline G2, and n_corners corner patches filled by plates whose seams are
+    within 1e-5 and 1e-4 rad (measured: 4.6e-7 and 1.2e-5 rad on one corner, 1.4e-6
+    and 3.7e-5 rad at worst on a box's eight), reported
+    and counted in the verdict, which is therefore not G2."""
+    assert len(rep["blends"]) == n_blends and not rep["kept_occt_faces"]
+    assert len(rep["trimlines"]) == 2 * n_blends
+    for r in rep["trimlines"]:
+        assert r["verdict"] == "G2" and r["g1"] < 1e-8 and r["g2_rel"] < 1e-6, r
+    assert len(rep["corner_patches"]) == n_corners
+    lines = C2Blend.format_report(rep).splitlines()
+    for c in rep["corner_patches"]:
+        assert c["edges"] == 3 and c["g0"] < 1e-5 and c["g1"] < 1e-4, c
+        assert c["verdict"] != "G2"
+        assert any(x.startswith(c["where"]) and "plate filling" in x and "never G2" in x
+                   for x in lines)
+    assert rep["verdict"] == min((c["verdict"] for c in rep["corner_patches"]),
+                                 key=ck.RANK.get)
+
+
+def test_three_edges_at_a_corner():
+    """The three edges meeting at the vertex (0, 0, 10), R = 2: each gets its own G2
+    blend, which stops at the ball's section where OCCT's corner patch (a sphere)
+    begins, and the patch is replaced by a plate filling tangent to the three blends'
+    ends. Edge10 runs along x at y = 0, z = 10: its blend's sections are the straight
+    90 degree edge's quintic all along, and its end section at the corner lies in the
+    plane x = 2 (and at the box's face x = 10 at its other end). The filling is built in
+    a hidden temporary document: the user's documents are as they were."""
+    docs = sorted(FreeCAD.listDocuments())
+    active = FreeCAD.ActiveDocument
+    box = shapes.box()
+    corner = _corner_edges(box, V(0, 0, 10))
+    assert len(corner) == 3 and "Edge10" in corner
     solid, rep = C2Blend.fillet_report(box, corner, 2.0, label="Box")
     assert_valid(solid)
-    assert rep["verdict"] == "G1" and rep["kept_occt_faces"] and not rep["blends"]
-    assert all("corner" in k["reason"] or "fillet" in k["reason"] for k in rep["kept_occt_faces"])
+    assert_corner_filled(rep, 3, 1)
+    assert sorted(FreeCAD.listDocuments()) == docs and FreeCAD.ActiveDocument == active
+    blend = [f for f in solid.Faces if f.Surface.__class__.__name__ == "BSplineSurface"
+             and f.BoundBox.YMax < 2.0 + 1e-6 and f.BoundBox.ZMin > 8.0 - 1e-6
+             and f.BoundBox.XLength > 7.0]
+    assert len(blend) == 1
+    assert _section_deviation(blend, 10.0, lambda p: p.y, "C2", 2.0) < 1e-7
+    srf = blend[0].Surface
+    v0, v1 = srf.bounds()[2:4]
+    xs = sorted(max(abs(srf.value(i / 8.0, v).x - x) for i in range(9)) < 1e-7
+                for v in (v0, v1) for x in (2.0, 10.0))
+    assert xs == [False, False, True, True]  # one end at x = 2, the other at x = 10
+    occt_jump(box, corner, 2.0)
+
+
+def test_all_twelve_edges_of_a_box():
+    """The commonest fillet of all: every edge of a box, R = 2. Twelve G2 blends and
+    eight filled corners, one valid solid."""
+    box = shapes.box()
+    edges = ["Edge%d" % (i + 1) for i in range(12)]
+    solid, rep = C2Blend.fillet_report(box, edges, 2.0, label="Box")
+    assert_valid(solid)
+    assert_corner_filled(rep, 12, 8)
+    assert len(solid.Faces) == 6 + 12 + 8
+    occt_jump(box, edges, 2.0)
+
+
+def test_a_kept_fillet_keeps_its_corner(monkeypatch):
+    """When one fillet at a corner cannot be replaced, OCCT's corner patch stays, and so
+    do the other fillets that meet it there (their blends' ends would not meet the
+    patch): here all three, so the solid is OCCT's."""
+    box = shapes.box()
+    corner = _corner_edges(box, V(0, 0, 10))
+    real, calls = fl.solve_chain, []
+
+    def first_fails(chain, *args, **kw):
+        calls.append(chain)
+        if len(calls) == 1:
+            raise fl.NotReplaced("kept by this test")
+        return real(chain, *args, **kw)
+
+    monkeypatch.setattr(fl, "solve_chain", first_fails)
+    solid, rep = C2Blend.fillet_report(box, corner, 2.0, label="Box")
+    assert len(calls) == 3 and not rep["blends"] and not rep["corner_patches"]
+    reasons = [k["reason"] for k in rep["kept_occt_faces"]]
+    assert reasons.count("kept by this test") == 1
+    # the patch is named by its centroid: a sphere octant's (centre (2, 2, 8), R = 2) lies
+    # R / 2 along each axis from the centre
+    assert sum("ends at the corner patch at (1, 1, 9), where a fillet is kept" in r
+               for r in reasons) == 2
+    assert any(k["where"] == "corner patch at (1, 1, 9)" for k in rep["kept_occt_faces"])
+    assert rep["verdict"] == "G1"
     assert rep["solid_check"] == ("OCCT's rolling-ball solid, unchanged: passes BRepCheck "
                                   "and the BOP check")
+    assert_valid(solid)
 
 
 def test_a_returned_occt_solid_is_checked_as_our_own():
@@ -1329,7 +1415,7 @@ def test_sample_in_a_gap_between_guide_pieces():
     s, edges = shapes.loft_with_boss(135.0)
     res = s.makeFillet(1.5, [s.getElement(e) for e in edges])
     ff = new_faces(s, res)
-    (chain,) = chains([RollingBallFace(res, f, ff) for f in ff])
+    (chain,), _ = chains([RollingBallFace(res, f, ff) for f in ff])
     con = Contact(chain, 1.5)
     first = con.pieces[1]
     for p in con.pieces[2:]:

@@ -143,7 +143,7 @@ def check(shape, edges, samples=101):
 
 def format_report(rep):
     """Human-readable lines for the Report view, of a check report (check()) or of a
-    fillet or blend report (its trimlines and the OCCT faces it kept)."""
+    fillet or blend report (its trimlines, corner fillings and the OCCT faces it kept)."""
     lines = []
     for r in rep["edges"] if "edges" in rep else rep["trimlines"]:
         lines.append("%s (%s): %s  G0 %.2e  G1 %.2e rad  curvature jump %.3g (rel %.2e)"
@@ -158,6 +158,11 @@ def format_report(rep):
                      "or crosses a knot line (not a trimline, not in the verdict): %s, as "
                      "the faces there; normals %.3g rad apart, curvature jump %.3g"
                      % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"], r["g2"]))
+    for r in rep.get("corner_patches", []):
+        lines.append("%s (%s): OCCT's corner patch replaced by its plate filling, tangent to "
+                     "the blends' ends within tolerance (never G2; in the verdict): %s, edges "
+                     "%.2e apart, normals %.2e rad apart"
+                     % (r["where"], r["face"], r["verdict"], r["g0"], r["g1"]))
     for k in rep.get("kept_occt_faces", []):
         lines.append("%s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
                      % (k["where"], k["reason"]))

@@ -13,6 +13,9 @@ Each end of an open fillet chain is one of:
   blends together, so two blends meeting at a mitre share the edge they are cut along.
 - a junction: where one run of a chain whose side changes face meets the next
   (rollingball.Run). Both blends end at the ball's section there, which is exact.
+- a corner: where the chain meets a corner patch (rollingball.CornerPatch). The blend
+  stops at the ball's section there as computed, and corners.py fills the hole the
+  blends leave around the patch.
 """
 import numpy as np
 import Part
@@ -33,11 +36,13 @@ class ChainEnd:
     1 (the end, last v); faces: OCCT's faces met there; fillets: those of them that are
     rolling-ball faces (mitres); edges: [(OCCT's end edge, the face it meets there)];
     across: True when the end is exact (see the module); junction: True where a run of
-    a chain meets the next run (rollingball.Run): exact, with no face there."""
+    a chain meets the next run (rollingball.Run): exact, with no face there; corner:
+    True where it meets a corner patch: exact, the patch replaced by a filling."""
 
     def __init__(self, at, junction=False):
         self.at, self.faces, self.fillets, self.edges = at, [], [], []
         self.across = self.junction = junction
+        self.corner = False
 
     def edges_on(self, face):
         """OCCT's end edges where the fillet meets `face`."""
@@ -65,9 +70,14 @@ def chain_ends(chain, fillet_faces):
             end.faces.append(nb)
             if any(nb.isSame(f) for f in fillet_faces):
                 end.fillets.append(nb)
+    for edge, _ in chain.corners:
+        d = [edge.distToShape(Part.Vertex(m))[0] for m, _ in guide]
+        out[0 if d[0] <= d[1] else 1].corner = True
     for end in out:
         m, t = guide[end.at]
-        if not end.junction and len(end.faces) == 1 and not end.fillets \
+        if end.corner and not end.faces:
+            end.across = True
+        elif not end.junction and len(end.faces) == 1 and not end.fillets \
                 and end.faces[0].Surface.isPlanar():
             n = frame_at_point(end.faces[0], m).n
             end.across = min(angle(n, t), angle(n, -t)) <= ACROSS

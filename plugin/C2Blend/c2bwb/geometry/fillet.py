@@ -17,12 +17,15 @@ a solid and checked (BRepCheck, and continuity along every trimline). A chain wh
 changes face (a rounded outline) has data only C1 along it: each run along one pair of
 faces gets the pointwise blend, and the runs meet at junctions (solve_runs). So do the
 pieces of a chain whose data are too rough because the contact crosses knot lines of
-a side face (solve_chain, knots.py). Kept as
-OCCT made them, and reported as such with the reason (no G2 claim is made there):
-corner patches where three fillets meet at a vertex, chains whose side changes face
-where no blend is G2 to both faces, and chains whose exact contact, blend, fit, cut or
-end face's growth cannot be built or whose blend overshoots its faces (NotReplaced,
-ends.trim, Unassembled), with the fillets that meet them in a mitre.
+a side face (solve_chain, knots.py). Where three or more fillets meet at a vertex,
+OCCT's corner patch ends their chains; when all of them are blended, the patch is
+replaced by a plate filling tangent to the blends' end sections (corners.py), measured
+and reported, never claimed G2. Kept as OCCT made them, and reported as such with the
+reason (no G2 claim is made there): chains whose side changes face where no blend is
+G2 to both faces, and chains whose exact contact, blend, fit, cut or end face's growth
+cannot be built or whose blend overshoots its faces (NotReplaced, ends.trim,
+Unassembled), with the fillets that meet them in a mitre or at a corner patch, and
+that corner patch.
 """
 import math
 import time
@@ -33,6 +36,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
+from . import corners as cn
 from . import ends
 from .knots import split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
@@ -195,7 +199,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     b = Blended(chain, at_ends, where, surface, fit, n, err)
     v_ends = surface.bounds()[2:4]
     for end in at_ends:
-        if end.across and not end.junction:
+        if end.across and end.faces:  # an end face across it, not a junction or corner
             gap = max(off_surface(end.faces[0].Surface, surface.value(u / 8.0, v_ends[end.at]))
                       for u in range(9))
             if gap > ON_FACE * fit["tolerance"]:
@@ -484,14 +488,16 @@ class _Touched:
         return t
 
 
-def assemble(shape, result, blended, fillet_faces, where):
+def assemble(shape, result, blended, fillet_faces, where, patches=()):
     """The solid: the faces of `result` (OCCT's fillet of `shape`) with the replaced
     rolling-ball faces dropped, the blend faces added, and every face of `shape` that a
     blend touches (sides and ends) cut anew along the blends' boundary curves; sewn,
-    made a solid and checked. Raises C2BlendError."""
+    with the holes left at the corner `patches` (rollingball.CornerPatch, all of whose
+    fillets are blended) filled (corners.py), made a solid and checked. Raises
+    C2BlendError, or Unassembled for the blends at a corner that cannot be filled."""
     diag = shape.BoundBox.DiagonalLength
     tol = 1e-7 * diag
-    drop = [f for b in blended for f in b.chain.faces]
+    drop = [f for b in blended for f in b.chain.faces] + [p.face for p in patches]
     kept_fillets = [f for f in fillet_faces if not any(f.isSame(d) for d in drop)]
     faces_out = [b.face for b in blended]
     # the original faces the blends touch, with the blend's edges lying on each
@@ -505,9 +511,9 @@ def assemble(shape, result, blended, fillet_faces, where):
                 continue  # a mitre, shared with another blend
             _Touched.of(touched, _original(shape, res_face), b).tools.append(edge)
     for t in list(touched):
-        # edges of OCCT fillets kept on this face bound it too
-        t.tools += [e for k in kept_fillets for e in k.Edges
-                    if _face_under(e, [t.orig], tol) is not None]
+        # edges of OCCT fillets kept, and of corner patches, on this face bound it too
+        t.tools += [e for k in kept_fillets + [p.face for p in patches] for e in k.Edges
+                    if not e.Degenerated and _face_under(e, [t.orig], tol) is not None]
         t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
                      and _edge_on_face(e, t.orig, tol)]
         for e in t.tools:
@@ -553,9 +559,21 @@ def assemble(shape, result, blended, fillet_faces, where):
                 any(_on_face(t.orig, _probe(f), tol) for t in touched):
             continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
-    sewn = Part.Compound(faces_out)
-    sewn.sewShape()
-    shells = sewn.Shells if sewn.ShapeType != "Shell" else [sewn]
+    shells = _sewn(faces_out)
+    if patches and len(shells) == 1:  # fill the holes the blends leave at the corners
+        try:
+            loops = cn.holes(shells[0], patches, 0.5 * min(p.face.BoundBox.DiagonalLength
+                                                            for p in patches))
+        except cn.Unfilled:
+            loops = None  # a sewing gap: reported below
+        for p, loop in zip(patches, loops or []):
+            try:
+                faces_out.append(cn.fill(shells[0], loop))
+            except cn.Unfilled as ex:
+                raise Unassembled([b for b in blended if any(b.source is c for c in p.chains)],
+                                  "the %s cannot be replaced: %s" % (p.where(), ex)) from None
+        if loops is not None:
+            shells = _sewn(faces_out)
     if len(shells) != 1 or not shells[0].isClosed():
         free = sum(1 for s in shells for e in s.Edges
                    if len(s.ancestorsOfType(e, Part.Face)) == 1
@@ -584,6 +602,32 @@ def assemble(shape, result, blended, fillet_faces, where):
                     "rebuild it first" % orig)
         raise C2BlendError(msg, where, "validity")
     return solid
+
+
+def _sewn(faces):
+    """The shells of `faces` sewn together."""
+    sewn = Part.Compound(faces)
+    sewn.sewShape()
+    return sewn.Shells if sewn.ShapeType != "Shell" else [sewn]
+
+
+def _fillable(patch, blended):
+    """True when every fillet at the corner patch is blended, so it can be filled."""
+    return all(any(b.source is c for b in blended) for c in patch.chains)
+
+
+def _corner_check(solid, patch):
+    """The continuity between the filling at a corner patch and the faces around it
+    (check.check_edge along each of its edges): the worst of each measure, with the
+    verdict by the report's criteria."""
+    probe = Part.Vertex(patch.face.Surface.value(*patch.face.Surface.parameter(
+        patch.face.CenterOfMass)))
+    face = min(solid.Faces, key=lambda f: f.distToShape(probe)[0])
+    rs = [ck.check_edge(solid, e) for e in face.Edges if not e.Degenerated]
+    return {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
+            "edges": len(rs), "g0": max(r["g0"] for r in rs),
+            "g1": max(r["g1"] for r in rs), "g2_rel": max(r["g2_rel"] for r in rs),
+            "verdict": min((r["verdict"] for r in rs), key=ck.RANK.get)}
 
 
 def _solid_problems(solid):
@@ -742,7 +786,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     t_occt = time.perf_counter() - t0
     fillet_faces = new_faces(shape, result)
     blended, kept = [], []
-    all_chains = chains([RollingBallFace(result, f, fillet_faces) for f in fillet_faces])
+    all_chains, patches = chains([RollingBallFace(result, f, fillet_faces)
+                                  for f in fillet_faces])
     wheres = _where(label, names, all_chains)
     for chain in all_chains:
         where = wheres.get(id(chain), "%s (a corner patch)" % where_all)
@@ -750,18 +795,27 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             kept.append({"where": where, "reason": chain.corner})
             continue
         try:
-            blended += solve_chain(chain, radius, where, continuity, shape_params, tension,
-                                   tol_rel, samples, max_samples, fillet_faces)
+            new = solve_chain(chain, radius, where, continuity, shape_params, tension,
+                              tol_rel, samples, max_samples, fillet_faces)
         except NotReplaced as ex:
             kept.append({"where": where, "reason": str(ex)})
+            continue
+        for b in new:
+            b.source = chain
+        blended += new
     t_solve = None
     while True:  # a blend that cannot be cut back or cut into its faces is kept as OCCT's
-        failed = ends.trim(blended, lambda f: _original(shape, f))
+        filled = [p for p in patches if _fillable(p, blended)]
+        failed = [(b, "it ends at the %s, where a fillet is kept as OCCT made it, so OCCT's "
+                   "patch and this fillet are kept too" % p.where())
+                  for p in patches if not any(p is q for q in filled)
+                  for b in blended if any(b.source is c for c in p.chains)] \
+            or ends.trim(blended, lambda f: _original(shape, f))
         if not failed:
             t_solve = t_solve or time.perf_counter()
             try:
-                solid = assemble(shape, result, blended, fillet_faces, where_all) if blended \
-                    else (result.Solids[0] if len(result.Solids) == 1 else result)
+                solid = assemble(shape, result, blended, fillet_faces, where_all, filled) \
+                    if blended else (result.Solids[0] if len(result.Solids) == 1 else result)
                 break
             except Unassembled as ex:
                 failed = [(b, str(ex)) for b in ex.blends]
@@ -774,6 +828,10 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     t_assemble = time.perf_counter()
     faces = [(b, _find_face(solid, b)) for b in blended]
     checks = _trimline_checks(solid, faces)
+    corner_checks = [_corner_check(solid, p) for p in filled] if blended else []
+    kept += [{"where": p.where(), "reason": "OCCT's corner patch, kept with the fillets "
+              "that meet there"} for p in patches if not blended
+             or not any(p is q for q in filled)]
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,
@@ -788,12 +846,14 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "trimlines": checks,
         "mitres": _shared_edge_checks(solid, faces, False),
         "junctions": _shared_edge_checks(solid, faces, True),
+        "corner_patches": corner_checks,
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
         "stage_seconds": {"occt_fillet": t_occt, "trimlines_solve_fit": t_solve - t0 - t_occt,
                           "sew_and_brepcheck": t_assemble - t_solve,
                           "continuity_check": time.perf_counter() - t_assemble},
     }
-    report["verdict"] = min([c["verdict"] for c in checks] + (["G1"] if kept else []),
+    report["verdict"] = min([c["verdict"] for c in checks + corner_checks]
+                            + (["G1"] if kept else []),
                             key=ck.RANK.get) if (checks or kept) else "none"
     return solid, report

@@ -133,15 +133,16 @@ def crossings(contact, k):
 def split_at_knots(chain, radius):
     """The runs of chain (chain.runs, or the whole chain) cut where the exact contact
     crosses a knot line of a side face: [Run] in order, each with its junctions and, at
-    the chain's ends, the chain's end edges; None when the contact crosses none. A
+    the chain's ends, the chain's end edges (and those at corner patches); None when the contact crosses none. A
     closed chain's runs start at a cut. Raises contact.ContactError."""
     parts = chain.runs or [chain]
     items = []  # (Section, True where a junction precedes it)
-    ends = []  # the end edges of the parts
+    ends, corners = [], []  # the parts' end edges, and those at corner patches
     cut = False
     for p in parts:
         contact = Contact(p, radius)
         ends += p.ends
+        corners += p.corners
         for k, sec in enumerate(p.sections):
             on, cuts = crossings(contact, k)
             bounds = [sec.a_start] + cuts + [sec.a_end]
@@ -165,14 +166,15 @@ def split_at_knots(chain, radius):
             groups.append([])
         groups[-1].append(sec)
     n = len(groups)
-    runs = [Run(g, (chain.closed or i > 0, chain.closed or i + 1 < n), ends=[])
+    runs = [Run(g, (chain.closed or i > 0, chain.closed or i + 1 < n), ends=[], corners=[])
             for i, g in enumerate(groups)]
     if not chain.closed:  # the chain's own end edges: at the first run's start or the last's end
         start = runs[0].sections[0]
         stop = runs[-1].sections[-1]
         p0 = Part.Vertex(start.rbf.point(start.a_start, start.cm))
         p1 = Part.Vertex(stop.rbf.point(stop.a_end, stop.cm))
-        for e, nb in ends:
-            near = runs[0] if e.distToShape(p0)[0] <= e.distToShape(p1)[0] else runs[-1]
-            near.ends.append((e, nb))
+        for edges, attr in ((ends, "ends"), (corners, "corners")):
+            for e, nb in edges:
+                near = runs[0] if e.distToShape(p0)[0] <= e.distToShape(p1)[0] else runs[-1]
+                getattr(near, attr).append((e, nb))
     return runs

@@ -87,14 +87,17 @@ class RollingBallFace:
     ends: [(edge, neighbour face)] (empty for a closed fillet): faces met at an angle,
     end faces of the solid or other fillets (mitres);
     links: [(edge, fillet face)], tangent joins to other rolling-ball faces of a chain;
+    corners: [(edge, corner patch face)], tangent joins to corner patches (chains());
     corner: None, or a string saying why the face cannot be replaced (corner patch).
+    patch: True for a corner patch: a face with two or more tangent joins to other
+    rolling-ball faces but not two contacts (where three fillets meet at a vertex).
     along: 0 or 1, the surface parameter along the fillet; range: its range on the face;
     across: (c1, c2), the across-parameters of the two contacts.
     """
 
     def __init__(self, result, face, fillet_faces):
         self.face = face
-        self.contacts, self.ends, self.links = [], [], []
+        self.contacts, self.ends, self.links, self.corners = [], [], [], []
         self.corner = None
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
@@ -110,6 +113,7 @@ class RollingBallFace:
                 self.contacts.append((e, nb))
             else:  # an end face, or another fillet met at an angle (a mitre)
                 self.ends.append((e, nb))
+        self.patch = len(self.contacts) != 2 and len(self.links) >= 2
         if self.corner is None and len(self.contacts) != 2:
             self.corner = ("it has %d tangent contact edges instead of 2 (a corner "
                            "patch, or a fillet that uses up a whole face)"
@@ -184,8 +188,8 @@ def _same_sides(a, b):
 class FilletChain:
     """Rolling-ball faces joined tangentially end to end: one blend, or one per run.
 
-    Attributes: faces; ends: [(edge, neighbour face)]; closed; corner: None or why the
-    chain is kept; junctions: (False, False), see Run. When corner is None: sections,
+    Attributes: faces; ends: [(edge, neighbour face)]; corners: [(edge, corner patch
+    face)], ends at corner patches; closed; corner: None or why the chain is kept; junctions: (False, False), see Run. When corner is None: sections,
     the members in order with their direction; sides: (F1, F2), the faces touched
     along side 1 and side 2 by the first section; runs: None when every section
     touches the same two faces, else [Run] (the side changes face along the chain, as
@@ -198,7 +202,8 @@ class FilletChain:
         self.members = members
         self.faces = [m.face for m in members]
         self.ends = [x for m in members for x in m.ends]
-        self.closed = not self.ends
+        self.corners = [x for m in members for x in m.corners]
+        self.closed = not self.ends and not self.corners
         self.runs = None
         self.corner = next((m.corner for m in members if m.corner), None)
         if self.corner is None:
@@ -277,23 +282,48 @@ class Run:
     junctions: (at start, at end), True where the run meets the next run of the chain
     (across OCCT's cross-section between two of its faces, or where knots.split_at_knots
     cut it) instead of ending; ends: the end edges of its sections' faces unless given
-    (a run cut from inside a face has only those at the chain's ends)."""
+    (a run cut from inside a face has only those at the chain's ends); corners: likewise,
+    its ends at corner patches."""
 
     closed = False
 
-    def __init__(self, sections, junctions, ends=None):
+    def __init__(self, sections, junctions, ends=None, corners=None):
         self.sections, self.junctions = sections, junctions
         self.faces = [x.rbf.face for x in sections]
         self.ends = [e for x in sections for e in x.rbf.ends] if ends is None else ends
+        self.corners = [e for x in sections for e in x.rbf.corners] if corners is None \
+            else corners
         self.sides = sections[0].sides
 
 
+class CornerPatch:
+    """OCCT's corner patch where three or more fillets meet at a vertex (a
+    RollingBallFace with patch set): face; chains: the FilletChains ending at it. It is
+    replaced by a filling (corners.py) when every one of those chains is blended."""
+
+    def __init__(self, rbf, chains_):
+        self.face = rbf.face
+        self.chains = [c for c in chains_ if any(f.isSame(self.face) for _, f in c.corners)]
+
+    def where(self):
+        """'corner patch at (x, y, z)', for messages."""
+        p = self.face.CenterOfMass
+        return "corner patch at (%.4g, %.4g, %.4g)" % (p.x, p.y, p.z)
+
+
 def chains(rbfs):
-    """Group RollingBallFaces into FilletChains by their tangent links."""
+    """Group RollingBallFaces into FilletChains by their tangent links; a corner patch
+    ends the chains that join it. Returns ([FilletChain], [CornerPatch])."""
+    patches = [r for r in rbfs if r.patch]
+    rbfs = [r for r in rbfs if not r.patch]
+    for r in rbfs:
+        r.corners = [(e, nb) for e, nb in r.links if any(nb.isSame(p.face) for p in patches)]
+        r.links = [(e, nb) for e, nb in r.links if not any(nb.isSame(p.face) for p in patches)]
     groups = []
     for r in rbfs:
         linked = [g for g in groups if any(nb.isSame(m.face) for m in g for _, nb in r.links)]
         merged = [r] + [m for g in linked for m in g]
         groups = [g for g in groups if not any(g is x for x in linked)] + [merged]
-    return [FilletChain(g) for g in groups]
+    out = [FilletChain(g) for g in groups]
+    return out, [CornerPatch(p, out) for p in patches]
 

@@ -99,6 +99,8 @@ class FilletPanel:
             return
         kept = "".join("\nKept as OCCT's G1 fillet at %s: %s" % (k["where"], k["reason"])
                        for k in rep["kept_occt_faces"])
+        kept += "".join("\n%s filled, normals within %.1e rad (not G2)" % (c["where"], c["g1"])
+                        for c in rep["corner_patches"])
         self.status.setText("%s; %d blend face(s), fit deviation %.2g, %.0f ms%s"
                             % (rep["verdict"], len(rep["blends"]),
                                max([b["fit_deviation"] for b in rep["blends"]] or [0.0]),
