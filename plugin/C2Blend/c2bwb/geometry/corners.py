@@ -38,7 +38,7 @@ class Unfilled(Exception):
 
 def holes(shell, patches, tol):
     """The free edges of the sewn shell (those with one face), each assigned to the
-    patch (rollingball.CornerPatch) nearest to it: [[edge, ...] per patch]. Raises
+    patch (rollingball.CornerPatch, at least one) nearest to it: [[edge, ...] per patch]. Raises
     Unfilled when a free edge is farther than tol from every patch: the hole is a
     sewing gap, not a corner."""
     out = [[] for _ in patches]
@@ -48,8 +48,8 @@ def holes(shell, patches, tol):
             continue
         mid = Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
         d = [p.face.distToShape(mid)[0] for p in patches]
-        k = min(range(len(patches)), key=d.__getitem__) if patches else None
-        if k is None or d[k] > tol:
+        k = min(range(len(patches)), key=d.__getitem__)
+        if d[k] > tol:
             raise Unfilled("the sewn faces leave a gap away from every corner patch")
         out[k].append(e)
     return out

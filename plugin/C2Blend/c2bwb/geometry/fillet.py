@@ -153,11 +153,12 @@ class Blended:
     surface; face: the part of it in the solid (full_face cut back at trimmed ends, see
     ends.trim); probe: a point inside face; group: None for a whole chain's blend, or
     the pointwise blends of all runs of its chain (solve_runs), which are kept or
-    replaced together."""
+    replaced together; source: the FilletChain it replaces (or a run or piece of),
+    which fillet() sets, for the corner patches that chain ends at."""
 
     def __init__(self, chain, ends, where, surface, fit, samples, data_rel):
         self.chain, self.ends, self.where, self.surface, self.fit = chain, ends, where, surface, fit
-        self.samples, self.data_rel, self.group = samples, data_rel, None
+        self.samples, self.data_rel, self.group, self.source = samples, data_rel, None, None
         self.full_face = self.face = Part.Face(surface)
         self.surface_diag = self.full_face.BoundBox.DiagonalLength
         sec = chain.sections[len(chain.sections) // 2]
@@ -570,8 +571,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=()):
             try:
                 faces_out.append(cn.fill(shells[0], loop))
             except cn.Unfilled as ex:
-                raise Unassembled([b for b in blended if any(b.source is c for c in p.chains)],
-                                  "the %s cannot be replaced: %s" % (p.where(), ex)) from None
+                raise Unassembled(_at_corner(p, blended), "the %s cannot be replaced: %s" % (p.where(), ex)) from None
         if loops is not None:
             shells = _sewn(faces_out)
     if len(shells) != 1 or not shells[0].isClosed():
@@ -609,6 +609,11 @@ def _sewn(faces):
     sewn = Part.Compound(faces)
     sewn.sewShape()
     return sewn.Shells if sewn.ShapeType != "Shell" else [sewn]
+
+
+def _at_corner(patch, blended):
+    """The blends of `blended` that replace fillets ending at the corner patch."""
+    return [b for b in blended if any(b.source is c for c in patch.chains)]
 
 
 def _fillable(patch, blended):
@@ -809,7 +814,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         failed = [(b, "it ends at the %s, where a fillet is kept as OCCT made it, so OCCT's "
                    "patch and this fillet are kept too" % p.where())
                   for p in patches if not any(p is q for q in filled)
-                  for b in blended if any(b.source is c for c in p.chains)] \
+                  for b in _at_corner(p, blended)] \
             or ends.trim(blended, lambda f: _original(shape, f))
         if not failed:
             t_solve = t_solve or time.perf_counter()

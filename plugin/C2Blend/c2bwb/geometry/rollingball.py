@@ -317,8 +317,9 @@ def chains(rbfs):
     patches = [r for r in rbfs if r.patch]
     rbfs = [r for r in rbfs if not r.patch]
     for r in rbfs:
-        r.corners = [(e, nb) for e, nb in r.links if any(nb.isSame(p.face) for p in patches)]
-        r.links = [(e, nb) for e, nb in r.links if not any(nb.isSame(p.face) for p in patches)]
+        joins, r.links = r.links, []
+        for e, nb in joins:
+            (r.corners if any(nb.isSame(p.face) for p in patches) else r.links).append((e, nb))
     groups = []
     for r in rbfs:
         linked = [g for g in groups if any(nb.isSame(m.face) for m in g for _, nb in r.links)]
