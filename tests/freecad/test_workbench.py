@@ -905,6 +905,52 @@ def test_all_twelve_edges_of_a_box():
     occt_jump(box, edges, 2.0)
 
 
+def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
+    """At tension 1.0008 (where the task panel's tension slider put 1.0), OCCT's BOP
+    check of the 12-edge box never finished: its face-face intersection of a blend and
+    the plate filling at one corner walks without end. The check runs in a child process
+    with a time limit; when it does not finish, the fillings whose neighbourhood check is
+    stuck are found and made again with another maximum degree, and the solid passes."""
+    real, found = fl.bc.stuck, []
+
+    def spy(*args):
+        found.append(real(*args))
+        return found[-1]
+
+    monkeypatch.setattr(fl.bc, "stuck", spy)
+    box = shapes.box()
+    edges = ["Edge%d" % (i + 1) for i in range(12)]
+    solid, rep = C2Blend.fillet_report(box, edges, 2.0, tension=1.0008, label="Box")
+    assert [len(f) for f in found] == [1]  # one corner's check was stuck
+    assert_valid(solid)
+    assert_corner_filled(rep, 12, 8)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
+def test_an_unfinished_bop_check_is_reported(monkeypatch):
+    """When the BOP check does not finish and no corner filling is to blame, the solid
+    (valid by BRepCheck) is returned, and the report says that the BOP check did not
+    finish, so Boolean operations on it may not finish either."""
+    def unfinished(shape, seconds):
+        raise fl.bc.Unfinished("OCCT's BOP check did not finish within %.0f s" % seconds)
+
+    monkeypatch.setattr(fl.bc, "_checked", unfinished)
+    box = shapes.box()
+    solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert rep["solid_check"] == (
+        "passes BRepCheck, but OCCT's BOP check did not finish within 30 s (it loops on "
+        "faces tangent along an edge): Boolean operations on this solid may not finish "
+        "either")
+    s, names = shapes.ruled_rounded_loft()
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Loft")
+    assert not rep["blends"]
+    assert rep["solid_check"] == ("OCCT's rolling-ball solid, unchanged: it passes "
+                                  "isValid(), but OCCT's BOP check did not finish within "
+                                  "30 s")
+
+
 def test_a_kept_fillet_keeps_its_corner(monkeypatch):
     """When one fillet at a corner cannot be replaced, OCCT's corner patch stays, and so
     do the other fillets that meet it there (their blends' ends would not meet the

@@ -36,8 +36,13 @@ assert "ShaftPlate.Vertex1: Vertex1 is not an edge; select only edges" in r["war
 assert "ShaftPlate: no edges selected" in r["warnings"], r
 assert "pick a face and one of its edges on each of two sides (selected: ShaftPlate.Face1)" in r["warnings"], r
 assert r["png_frames"] == 10 and r["png_sizes_ok"], r
+assert r["edit_parameters"] == [2.0, "C2", [2.5, 1.0, 1.0, 1.0], 1.37], r
+assert r["box_parameters"] == [2.0, "C2", [1.0, 1.0, 1.0, 1.0], 1.0], r
+assert r["box_blends"] == 12 and r["box_corners"] == 8 and r["box_valid"], r
+assert r["box_solid_check"] == "passes BRepCheck and the BOP check", r
 print("gui test: G2 fillet, curvature map shown, screenshot not blank; G2 blend faces; "
-      "10 PNG animation frames")
+      "10 PNG animation frames; the panel keeps exact values; a box's 12 edges with 8 "
+      "filled corners")
 PY
 if [ -n "$C2B_CGAL_TOOL" ]; then
   grep "CGAL jet fit vs analytic, blend faces" "$OUT/gui_log.txt"

@@ -55,11 +55,12 @@ def holes(shell, patches, tol):
     return out
 
 
-def fill(shell, edges):
-    """The face filling the hole bounded by `edges` (free edges of `shell`), tangent to
-    each edge's face in the shell (OCCT's plate, FILL). Built in a hidden temporary
-    document, which is closed again; the active document is left as it was. Raises
-    Unfilled."""
+def fill(shell, edges, degrees=MAX_DEGREES):
+    """(face, maximum degree): the face filling the hole bounded by `edges` (free edges
+    of `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with
+    each of `degrees` tried as its maximum degree until a seam is within GOOD_G1, the
+    best kept. Built in a hidden temporary document, which is closed again; the active
+    document is left as it was. Raises Unfilled."""
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
     try:
         holder = doc.addObject("Part::Feature", "Shell")
@@ -71,8 +72,8 @@ def fill(shell, edges):
             j = next(i for i, x in enumerate(shell.Faces) if x.isSame(f))
             names.append((holder, "Edge%d" % (k + 1)))
             faces.append("Face%d" % (j + 1))
-        best = None  # (worst seam angle, face)
-        for degree in MAX_DEGREES:
+        best = None  # (worst seam angle, face, degree)
+        for degree in degrees:
             filling = doc.addObject("Surface::Filling", "Fill")
             for key, value in FILL.items():
                 setattr(filling, key, value)
@@ -87,12 +88,12 @@ def fill(shell, edges):
             face = result.Faces[0].copy()
             turn = _seam_angle(face, shell, edges)
             if best is None or turn < best[0]:
-                best = (turn, face)
+                best = (turn, face, degree)
             if turn <= GOOD_G1:
                 break
         if best is None:
             raise Unfilled("OCCT's plate filling of its %d-sided hole failed" % len(edges))
-        return best[1]
+        return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
 

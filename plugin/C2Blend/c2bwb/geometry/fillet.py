@@ -36,6 +36,7 @@ from ..errors import C2BlendError
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
+from . import bopcheck as bc
 from . import corners as cn
 from . import ends
 from .knots import split_at_knots
@@ -494,8 +495,9 @@ def assemble(shape, result, blended, fillet_faces, where, patches=()):
     rolling-ball faces dropped, the blend faces added, and every face of `shape` that a
     blend touches (sides and ends) cut anew along the blends' boundary curves; sewn,
     with the holes left at the corner `patches` (rollingball.CornerPatch, all of whose
-    fillets are blended) filled (corners.py), made a solid and checked. Raises
-    C2BlendError, or Unassembled for the blends at a corner that cannot be filled."""
+    fillets are blended) filled (corners.py), made a solid and checked (bopcheck.py).
+    Returns (solid, the report's line on its check). Raises C2BlendError, or
+    Unassembled for the blends at a corner that cannot be filled."""
     diag = shape.BoundBox.DiagonalLength
     tol = 1e-7 * diag
     drop = [f for b in blended for f in b.chain.faces] + [p.face for p in patches]
@@ -561,19 +563,77 @@ def assemble(shape, result, blended, fillet_faces, where, patches=()):
             continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
     shells = _sewn(faces_out)
+    fills = []  # _Fill per corner patch
     if patches and len(shells) == 1:  # fill the holes the blends leave at the corners
         try:
             loops = cn.holes(shells[0], patches, 0.5 * min(p.face.BoundBox.DiagonalLength
                                                             for p in patches))
         except cn.Unfilled:
-            loops = None  # a sewing gap: reported below
-        for p, loop in zip(patches, loops or []):
-            try:
-                faces_out.append(cn.fill(shells[0], loop))
-            except cn.Unfilled as ex:
-                raise Unassembled(_at_corner(p, blended), "the %s cannot be replaced: %s" % (p.where(), ex)) from None
-        if loops is not None:
-            shells = _sewn(faces_out)
+            loops = []  # a sewing gap: reported below
+        fills = [_Fill(shells[0], p, loop, _at_corner(p, blended))
+                 for p, loop in zip(patches, loops)]
+    solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
+                    result, where)
+    while True:
+        try:
+            problems, line = bc.problems(solid), "passes BRepCheck and the BOP check"
+            break
+        except bc.Unfinished as ex:
+            # OCCT's intersection loops: on a plate filling and a blend (seen), remade
+            # with another maximum degree where its neighbourhood's check is stuck
+            faces = [_patch_face(solid, f.patch) for f in fills]
+            stuck = bc.stuck(solid, faces, bc.NEAR_LIMIT)
+            redo = [f for f, g in zip(fills, faces) if any(g.isSame(x) for x in stuck)]
+            if not redo or not all(f.refill() for f in redo):
+                problems = bc.problems(solid, bop=False)
+                line = ("passes BRepCheck, but %s (it loops on faces tangent along an "
+                        "edge%s): Boolean operations on this solid may not finish either"
+                        % (ex, ", at the %s, with every plate filling tried"
+                           % ", ".join(f.patch.where() for f in redo) if redo else ""))
+                break
+            solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where)
+    if problems:
+        msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
+               % problems)
+        orig = _input_problems(shape)
+        if orig:
+            msg += ("; the input solid already fails that check (%s), so repair or "
+                    "rebuild it first" % orig)
+        raise C2BlendError(msg, where, "validity")
+    return solid, line
+
+
+class _Fill:
+    """The plate filling (face) of a corner patch's hole (edges loop of the open
+    shell), with the maximum degrees tried (corners.fill). Raises Unassembled for
+    `blends`, those ending there, when the hole cannot be filled."""
+
+    def __init__(self, shell, patch, loop, blends):
+        self.shell, self.patch, self.loop = shell, patch, loop
+        self.tried, self.face, self.error = [], None, None
+        if not self.refill():
+            raise Unassembled(blends, "the %s cannot be replaced: %s"
+                              % (patch.where(), self.error))
+
+    def refill(self):
+        """Fill again with the maximum degrees not yet tried; False when none is left
+        or none gives a face (error says why)."""
+        left = [d for d in cn.MAX_DEGREES if d not in self.tried]
+        if not left:
+            return False
+        try:
+            self.face, degree = cn.fill(self.shell, self.loop, left)
+        except cn.Unfilled as ex:
+            self.error = str(ex)
+            return False
+        self.tried.append(degree)
+        return True
+
+
+def _closed(shells, result, where):
+    """The solid bounded by the one closed shell of `shells`, facing outwards, with the
+    tolerance of each edge not in `result` (OCCT's fillet) raised to its pcurves'
+    deviation. Raises C2BlendError for a sewing that left free edges."""
     if len(shells) != 1 or not shells[0].isClosed():
         free = sum(1 for s in shells for e in s.Edges
                    if len(s.ancestorsOfType(e, Part.Face)) == 1
@@ -592,15 +652,6 @@ def assemble(shape, result, blended, fillet_faces, where, patches=()):
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
     old = {e.hashCode() for e in result.Edges}
     _update_tolerances([e for e in solid.Edges if e.hashCode() not in old])
-    problems = _solid_problems(solid)
-    if problems:
-        msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
-               % problems)
-        orig = _solid_problems(shape)
-        if orig:
-            msg += ("; the input solid already fails that check (%s), so repair or "
-                    "rebuild it first" % orig)
-        raise C2BlendError(msg, where, "validity")
     return solid
 
 
@@ -625,9 +676,7 @@ def _corner_check(solid, patch):
     """The continuity between the filling at a corner patch and the faces around it
     (check.check_edge along each of its edges): the worst of each measure, with the
     verdict by the report's criteria."""
-    probe = Part.Vertex(patch.face.Surface.value(*patch.face.Surface.parameter(
-        patch.face.CenterOfMass)))
-    face = min(solid.Faces, key=lambda f: f.distToShape(probe)[0])
+    face = _patch_face(solid, patch)
     rs = [ck.check_edge(solid, e) for e in face.Edges if not e.Degenerated]
     return {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
             "edges": len(rs), "g0": max(r["g0"] for r in rs),
@@ -635,30 +684,38 @@ def _corner_check(solid, patch):
             "verdict": min((r["verdict"] for r in rs), key=ck.RANK.get)}
 
 
-def _solid_problems(solid):
-    """What BRepCheck and OCCT's BOP argument check (check(True)) find wrong with solid,
-    one line, each finding with its count; None when both pass."""
-    try:
-        solid.check(True)
-    except Exception as ex:
-        found = [line.strip() for line in str(ex).splitlines() if line.strip()]
-        found = found[1:] if len(found) > 1 and found[0].endswith(":") else found
-        return "; ".join("%s (%d)" % (f, found.count(f)) if found.count(f) > 1 else f
-                         for f in dict.fromkeys(found))
-    return None
+def _patch_face(solid, patch):
+    """The face of `solid` that fills the hole at the corner patch: the face nearest to
+    a point of the patch near its centre."""
+    probe = Part.Vertex(patch.face.Surface.value(*patch.face.Surface.parameter(
+        patch.face.CenterOfMass)))
+    return min(solid.Faces, key=lambda f: f.distToShape(probe)[0])
 
 
 def _occt_result_check(shape, result):
     """The report's line on a solid returned as OCCT's fillet made it (every chain kept):
     isValid() holds (_rolling_ball), but OCCT's own fillet is not checked further, and
     can fail the BOP argument check that C2Blend's own solids pass."""
-    problems = _solid_problems(result)
+    try:
+        problems = bc.problems(result)
+    except bc.Unfinished as ex:
+        return ("OCCT's rolling-ball solid, unchanged: it passes isValid(), but %s"
+                % ex)
     if problems is None:
         return "OCCT's rolling-ball solid, unchanged: passes BRepCheck and the BOP check"
     return ("OCCT's rolling-ball solid, unchanged (FreeCAD's Fillet gives the same): it "
             "passes isValid(), but the BOP check finds: %s%s; Boolean operations on it "
-            "may fail" % (problems, "" if _solid_problems(shape) is None
+            "may fail" % (problems, "" if _input_problems(shape) is None
                           else ", and so does the input solid"))
+
+
+def _input_problems(shape):
+    """What the BOP check finds wrong with the input solid (bopcheck.problems), None
+    also when the check does not finish."""
+    try:
+        return bc.problems(shape)
+    except bc.Unfinished:
+        return None
 
 
 def _where(label, names, chains_):
@@ -819,8 +876,12 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         if not failed:
             t_solve = t_solve or time.perf_counter()
             try:
-                solid = assemble(shape, result, blended, fillet_faces, where_all, filled) \
-                    if blended else (result.Solids[0] if len(result.Solids) == 1 else result)
+                if blended:
+                    solid, solid_check = assemble(shape, result, blended, fillet_faces,
+                                                  where_all, filled)
+                else:
+                    solid = result.Solids[0] if len(result.Solids) == 1 else result
+                    solid_check = _occt_result_check(shape, solid)
                 break
             except Unassembled as ex:
                 failed = [(b, str(ex)) for b in ex.blends]
@@ -846,8 +907,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                     "closed": b.chain.closed, "pointwise": b.group is not None}
                    for b in blended],
         "kept_occt_faces": kept,
-        "solid_check": _occt_result_check(shape, solid) if not blended else
-        "passes BRepCheck and the BOP check",
+        "solid_check": solid_check,
         "trimlines": checks,
         "mitres": _shared_edge_checks(solid, faces, False),
         "junctions": _shared_edge_checks(solid, faces, True),

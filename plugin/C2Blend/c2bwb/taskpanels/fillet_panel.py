@@ -42,8 +42,8 @@ class FilletPanel:
             s = QtGui.QSlider(QtCore.Qt.Horizontal)
             s.setRange(0, 1000)
             s.lo, s.hi = lo, hi
-            value = getattr(obj, name) if obj else 1.0
-            s.setValue(self.position(s, value))
+            s.exact = getattr(obj, name) if obj else 1.0
+            s.setValue(self.position(s, s.exact))
             label = QtGui.QLabel()
             s.valueChanged.connect(lambda _v, s=s, label=label: label.setText("%.3f" % self.value(s)))
             label.setText("%.3f" % self.value(s))
@@ -65,9 +65,13 @@ class FilletPanel:
         self.cont.currentIndexChanged.connect(lambda _v: self.timer.start(150))
         self.timer.start(10)
 
-    @staticmethod
-    def value(s):
-        """Slider position (0..1000) to parameter value."""
+    @classmethod
+    def value(cls, s):
+        """Slider position (0..1000) to parameter value; the exact value it was set to
+        while it stays at that value's position (a tension of 1 is at position 286,
+        which is 1.0008: an unmoved slider must not change the fillet)."""
+        if s.value() == cls.position(s, s.exact):
+            return s.exact
         x = s.value() / 1000.0
         if s.lo > 0 and s.hi / s.lo > 100:
             return s.lo * (s.hi / s.lo) ** x
