@@ -843,8 +843,9 @@ def _corner_edges(box, vertex):
             if min((v.Point - vertex).Length for v in e.Vertexes) < 1e-9]
 
 
-def assert_corner_filled(rep, n_blends, n_corners):
-    """Every trimline G2, and n_corners corner patches filled by plates whose seams are
+def assert_corner_filled(rep, n_blends, n_corners, sides=3):
+    """Every trimline G2, and n_corners corner patches, each with `sides` edges, filled
+    by plates whose seams are
     within 1e-5 and 1e-4 rad (measured: 4.6e-7 and 1.2e-5 rad on one corner, 1.4e-6
     and 3.7e-5 rad at worst on a box's eight), reported
     and counted in the verdict, which is therefore not G2."""
@@ -855,7 +856,7 @@ def assert_corner_filled(rep, n_blends, n_corners):
     assert len(rep["corner_patches"]) == n_corners
     lines = C2Blend.format_report(rep).splitlines()
     for c in rep["corner_patches"]:
-        assert c["edges"] == 3 and c["g0"] < 1e-5 and c["g1"] < 1e-4, c
+        assert c["edges"] == sides and c["g0"] < 1e-5 and c["g1"] < 1e-4, c
         assert c["verdict"] != "G2"
         assert any(x.startswith(c["where"]) and "plate filling" in x and "never G2" in x
                    for x in lines)
@@ -903,6 +904,21 @@ def test_all_twelve_edges_of_a_box():
     assert_corner_filled(rep, 12, 8)
     assert len(solid.Faces) == 6 + 12 + 8
     occt_jump(box, edges, 2.0)
+
+
+def test_a_corner_of_convex_and_concave_fillets():
+    """The L bracket's inner vertex (5, 0, 5), where the concave inner edge meets two
+    convex edges of the front face, R = 1: OCCT's corner patch there is no sphere, and
+    its hole has four sides, one of them on the front face; it is filled all the same
+    (measured: seams 2.3e-6 apart, normals 6.6e-5 rad)."""
+    s, _, inner = shapes.l_bracket()
+    corner = _corner_edges(s, V(5, 0, 5))
+    assert len(corner) == 3 and inner in corner
+    solid, rep = C2Blend.fillet_report(s, corner, 1.0, label="Bracket")
+    assert_valid(solid)
+    assert_corner_filled(rep, 3, 1, sides=4)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    occt_jump(s, corner, 1.0)
 
 
 def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
