@@ -133,8 +133,9 @@ def crossings(contact, k):
 def split_at_knots(chain, radius):
     """The runs of chain (chain.runs, or the whole chain) cut where the exact contact
     crosses a knot line of a side face: [Run] in order, each with its junctions and, at
-    the chain's ends, the chain's end edges (and those at corner patches); None when the contact crosses none. A
-    closed chain's runs start at a cut. Raises contact.ContactError."""
+    the chain's ends, the chain's end edges (and those at corner patches); None when the
+    contact crosses none. A closed chain's runs start at a cut. Raises
+    contact.ContactError."""
     parts = chain.runs or [chain]
     items = []  # (Section, True where a junction precedes it)
     ends, corners = [], []  # the parts' end edges, and those at corner patches

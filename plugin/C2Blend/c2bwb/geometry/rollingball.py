@@ -189,11 +189,12 @@ class FilletChain:
     """Rolling-ball faces joined tangentially end to end: one blend, or one per run.
 
     Attributes: faces; ends: [(edge, neighbour face)]; corners: [(edge, corner patch
-    face)], ends at corner patches; closed; corner: None or why the chain is kept; junctions: (False, False), see Run. When corner is None: sections,
-    the members in order with their direction; sides: (F1, F2), the faces touched
-    along side 1 and side 2 by the first section; runs: None when every section
-    touches the same two faces, else [Run] (the side changes face along the chain, as
-    a rounded rectangle's top edge runs along planes and cylinders).
+    face)], ends at corner patches; closed; corner: None or why the chain is kept;
+    junctions: (False, False), see Run. When corner is None: sections, the members in
+    order with their direction; sides: (F1, F2), the faces touched along side 1 and
+    side 2 by the first section; runs: None when every section touches the same two
+    faces, else [Run] (the side changes face along the chain, as a rounded rectangle's
+    top edge runs along planes and cylinders).
     """
 
     junctions = (False, False)
