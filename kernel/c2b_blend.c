@@ -709,33 +709,46 @@ c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, 
     static const int uentry[C2B_MAX_N] = {0, 1, 3, 6}; /* S, Su, Suu, Suuu */
     const c2b_vdomain *dom = &b->pb.dom;
     double L = dom->v1 - dom->v0;
+    size_t nd = c2b_blend_deriv_count(order), most = (size_t)ns;
     for (int k = 0; k < 2 * n; k++)
         res[k] = scale[k] = 0.0;
     for (int side = 0; side < 2; side++)
         for (int c = 0; c < C2B_NCOMP; c++)
             for (int p = 0; p < n; p++) {
                 const c2b_bfunc *bf = &b->pb.data[c][side][p];
-                int m = bf->fn ? ns : bf->samples ? bf->n_samples : ns;
-                for (int i = 0; i < m; i++) {
-                    double v, want;
-                    if (bf->samples && !bf->fn) {
-                        int iv = dom->periodic ? m : m - 1;
-                        v = dom->v0 + L * i / iv;
-                        want = bf->samples[(size_t)i * (size_t)(bf->stride ? bf->stride : 1)];
-                    } else {
-                        v = dom->v0 + L * i / (ns - 1);
-                        want = bf->fn ? bf->fn(bf->ctx, v, b->t) : 0.0;
-                    }
-                    double u = side, out[3 * 10];
-                    c2b_status st = c2b_blend_eval(b, 1, &u, &v, order, out, err);
-                    if (st)
-                        return st;
-                    double got = out[uentry[p] * 3 + c];
+                if (bf->samples && !bf->fn && (size_t)bf->n_samples > most)
+                    most = (size_t)bf->n_samples;
+            }
+    double *v = malloc(most * sizeof *v), *out = malloc(most * nd * 3 * sizeof *out);
+    c2b_status st = v && out ? C2B_OK : c2b_error_set(err, C2B_ERR_NOMEM, "out of memory");
+    /* One grid evaluation (a row at u = side) per side and set of v: sampled data
+     * usually share one sample count, so that is one or two per side. */
+    for (int side = 0; side < 2 && !st; side++) {
+        int have = 0; /* the v set in out: 0 none, m + 1 for m sampled points, -1 for ns */
+        for (int c = 0; c < C2B_NCOMP && !st; c++)
+            for (int p = 0; p < n && !st; p++) {
+                const c2b_bfunc *bf = &b->pb.data[c][side][p];
+                int sampled = bf->samples && !bf->fn;
+                int m = sampled ? bf->n_samples : ns, iv = sampled && dom->periodic ? m : m - 1;
+                for (int i = 0; i < m; i++)
+                    v[i] = dom->v0 + L * i / iv;
+                if (have != (sampled ? m + 1 : -1)) {
+                    double u = side;
+                    st = c2b_blend_eval_grid(b, 1, &u, (size_t)m, v, order, out, err);
+                    have = sampled ? m + 1 : -1;
+                }
+                for (int i = 0; i < m && !st; i++) {
+                    double want = sampled ? bf->samples[(size_t)i * (size_t)(bf->stride ? bf->stride : 1)]
+                                  : bf->fn ? bf->fn(bf->ctx, v[i], b->t) : 0.0;
+                    double got = out[((size_t)i * nd + (size_t)uentry[p]) * 3 + (size_t)c];
                     res[side * n + p] = fmax(res[side * n + p], fabs(got - want));
                     scale[side * n + p] = fmax(scale[side * n + p], fabs(want));
                 }
             }
-    return C2B_OK;
+    }
+    free(v);
+    free(out);
+    return st;
 }
 
 /* ---- introspection ----------------------------------------------------------------- */
