@@ -98,6 +98,36 @@ def test_loft_bspline_plane():
     assert all(r["g2_rel"] > 0.1 for r in occt["edges"])
 
 
+def test_loft_tube_seam_slow_start():
+    """The side of a lofted tube is one patch whose seam is G2, not G3. The sampled data
+    gain only 1.3x from 32 to 64 samples, then 4x per doubling: sampling must not stop
+    at the slow start (64 samples gave a normal angle of 1.5e-8 rad, a G0 verdict)."""
+    s, edge = shapes.loft_tube()
+    seam = next(e for e in s.Faces[0].Edges if e.isSeam(s.Faces[0]))
+    assert seam.Length > 29  # the contact crosses the side's seam
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Tube")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert rep["blends"][0]["samples"] >= 256 and rep["blends"][0]["data_error"] < 1e-8
+
+
+def test_sampling_stops_where_data_stall(monkeypatch):
+    """solve_sampled's stopping rule on given error sequences: a slow doubling followed by
+    a fast one continues; two slow doublings stop, returning the smallest error."""
+    from c2bwb.geometry import bspline
+
+    def run(errs):
+        seq = iter(errs)
+        monkeypatch.setattr(bspline, "solve", lambda spec, where: spec)
+        monkeypatch.setattr(bspline, "data_error", lambda blend: next(seq))
+        return bspline.solve_sampled(lambda n: (n, n), lambda r0, r1: r0, "X.Edge1", 32, 1024,
+                                     1e-8, 1e-6)
+
+    assert run([1.9e-7, 1.4e-7, 4.2e-8, 1.1e-8, 2.7e-9]) == (512, 512, 2.7e-9)
+    assert run([1e-7, 0.8e-7, 0.9e-7]) == (64, 64, 0.8e-7)
+    assert run([1e-3, 1e-9]) == (64, 64, 1e-9)
+
+
 def test_cone_on_plate():
     """Cone on a plate: both faces are straight across the trimlines, so S_uu is zero up
     to rounding on both sides; the data error must not be measured against that noise

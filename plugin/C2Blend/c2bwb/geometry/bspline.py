@@ -62,20 +62,25 @@ def data_error(blend):
 def solve_sampled(rows_at, spec_of, where, samples, max_samples, target, hopeless):
     """Sample boundary rows (rows_at(n) -> (rows0, rows1)), doubling n from `samples`
     until the kernel's measured data error is below `target`, stops improving (less
-    than 2x per doubling), or n reaches max_samples. It also stops where convergence is
-    algebraic (the gain per doubling no longer grows, as where data that are not smooth
-    cross a spline's knot) and, at the last gain, the error would still be above
-    `hopeless` at max_samples. Returns (blend, n, error)."""
-    n, errs = samples, []
+    than 2x on each of two doublings in a row: one slow doubling can be the start of
+    algebraic convergence, as where a face's seam is only G2), or n reaches
+    max_samples. It also stops where convergence is algebraic (the gain per doubling no
+    longer grows, as where data that are not smooth cross a spline's knot) and, at the
+    last gain, the error would still be above `hopeless` at max_samples. Returns
+    (blend, n, error) of the smallest error found."""
+    n, errs, best = samples, [], None
     while True:
         rows0, rows1 = rows_at(n)
         blend = solve(spec_of(rows0, rows1), where)
         err = data_error(blend)
         errs.append(err)
-        if err <= target or 2 * n > max_samples or (len(errs) > 1 and err > 0.5 * errs[-2]):
-            return blend, n, err
+        if best is None or err < best[2]:
+            best = (blend, n, err)
+        stalled = len(errs) > 2 and err > 0.5 * errs[-2] and errs[-2] > 0.5 * errs[-3]
+        if err <= target or 2 * n > max_samples or stalled:
+            return best
         if len(errs) > 2:
             gain, before = errs[-2] / err, errs[-3] / errs[-2]
             if gain <= before and err / gain ** math.log2(max_samples / n) > hopeless:
-                return blend, n, err
+                return best
         n *= 2
