@@ -122,6 +122,18 @@ def wall_into_cylinder():
     return s, names[0]
 
 
+def boss_into_wall():
+    """A 20 x 20 x 20 box fused with a cylinder r = 6, h = 20 on axis x = 20, y = 10
+    (half of it stands out of the box's face x = 20); returns (solid, names of the two
+    concave edges where the cylinder meets that face, at y = 4 and y = 16)."""
+    s = Part.makeBox(20, 20, 20).fuse(Part.makeCylinder(6, 20, V(20, 10, 0))).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if abs(e.BoundBox.XMin - 20) < 1e-9 and abs(e.BoundBox.XMax - 20) < 1e-9
+             and e.BoundBox.ZLength > 19 and 1 < e.BoundBox.YMin < 19]
+    assert len(names) == 2, names
+    return s, names
+
+
 def box_into(bulge):
     """A 20 x 10 x 10 box fused with a cylinder r = 8 (axis x = 20, y = 5, z in [0, 10])
     or a sphere r = 8 (centre (20, 5, 5)) bulging out of its front; returns (solid, name

@@ -1232,6 +1232,44 @@ def _corner_area(radius, tension=1.0):
     return 0.5 * abs(P.polyval(1.0, f) - P.polyval(0.0, f))
 
 
+def test_boss_into_wall():
+    """A cylinder boss standing half out of a box's wall, its two concave edges filleted.
+    Each blend's end section lies on the top (bottom) face, which grows by the region
+    between it and the nearest corner of that face. The face's edges, extended, pass
+    near both ends of the section at a far corner too (the wall's line reaches the
+    other edge's corner; the cylinder's circle, both): that region once was taken, so
+    OCCT's faces were kept. The part is a prism, so: both end faces grow by the same
+    area A (two regions), the section at mid-height encloses 400 + 18 pi + A, and the
+    volume grows by 20 A."""
+    s, edges = shapes.boss_into_wall()
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Boss")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 2 and not rep["kept_occt_faces"]
+    base = 400.0 + 18.0 * math.pi
+    ends = [[f for f in solid.Faces if isinstance(f.Surface, Part.Plane)
+             and abs(f.BoundBox.ZMin - z) < 1e-9 and abs(f.BoundBox.ZMax - z) < 1e-9]
+            for z in (0.0, 20.0)]
+    assert [len(e) for e in ends] == [1, 1]
+    area = ends[1][0].Area - base
+    assert abs(ends[0][0].Area - base - area) < 1e-7
+    section = Part.Face(Part.Wire(solid.slice(V(0, 0, 1), 10.0)[0].Edges))
+    assert abs(section.Area - base - area) < 1e-4  # slicing approximates the blend's curve
+    assert abs(solid.Volume - s.Volume - 20.0 * area) < 1e-5
+    # The ball (R = 1) touches the wall at p1 = (20, yc) and the cylinder at
+    # p2 = c + 6 (b - c) / 7, b = (21, yc) its centre, c = (20, 10): |b - c| = 7 gives
+    # yc = 10 - sqrt 48. Each blend lies between the corner (20, 4) and the chord p1 p2,
+    # so its region is at most the triangle (corner, p1, p2) less the circle's segment
+    # between the corner and p2 (angle asin 1/7 at c).
+    yc = 10.0 - math.sqrt(48.0)
+    p1, p2, corner = (20.0, yc), (20.0 + 6.0 / 7.0, 10.0 + 6.0 * (yc - 10.0) / 7.0), (20.0, 4.0)
+    tri = 0.5 * abs((p1[0] - corner[0]) * (p2[1] - corner[1])
+                    - (p2[0] - corner[0]) * (p1[1] - corner[1]))
+    angle = math.asin(1.0 / 7.0)
+    under_chord = tri - 0.5 * 36.0 * (angle - math.sin(angle))
+    assert 0.0 < area / 2.0 < under_chord
+
+
 def test_l_bracket_inner_edge():
     """The inner (concave) corner edge of an L bracket. The fillet adds material, so each
     L-shaped end face grows by the region between the corner and the blend's end

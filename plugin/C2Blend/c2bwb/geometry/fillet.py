@@ -367,20 +367,25 @@ def _growth(face, edge, tol):
     ends = [v.Point for v in edge.Vertexes]
     if len(ends) != 2:
         return None
+    spans = []  # (length of the legs, corner, legs)
     for corner in face.Vertexes:
         at = [e for e in face.Edges
               if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
         legs = [next((g for g in (_leg(e.Curve, p, corner.Point, tol) for e in at)
                       if g is not None), None) for p in ends]
-        if None in legs:
-            continue
-        region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
-        region.validate()
-        uv = [g.Surface.parameter(corner.Point) for g in (region, face)]
-        if region.normalAt(*uv[0]).dot(face.normalAt(*uv[1])) < 0:
-            region.reverse()  # oriented like face, so the two merge into one
-        return region, corner.Point, legs
-    return None
+        if None not in legs:
+            spans.append((sum(g.Length for g in legs), corner, legs))
+    if not spans:
+        return None
+    # the nearest such corner: a far one on the same curves spans the face's other end
+    # (a boss into a wall: the wall's edge, extended, passes both of the boss's sides)
+    _, corner, legs = min(spans, key=lambda c: c[0])
+    region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
+    region.validate()
+    uv = [g.Surface.parameter(corner.Point) for g in (region, face)]
+    if region.normalAt(*uv[0]).dot(face.normalAt(*uv[1])) < 0:
+        region.reverse()  # oriented like face, so the two merge into one
+    return region, corner.Point, legs
 
 
 def _edge_points(edge, fractions=(0.25, 0.5, 0.75)):
