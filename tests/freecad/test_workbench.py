@@ -951,6 +951,43 @@ def test_a_corner_of_convex_and_concave_fillets():
     occt_jump(s, corner, 1.0)
 
 
+def test_a_hole_listed_out_of_order_is_filled(monkeypatch):
+    """OCCT's filling takes the hole's edges only in the order they follow one another;
+    the sewn shell lists them in its own order. The L bracket's four-sided hole, its
+    edges given as 1, 3, 2, 4, is filled all the same (it was not: on a boss filleted
+    all round, that failure kept every fillet as OCCT made it)."""
+    real, got = fl.cn.fill, []
+
+    def spy(shell, edges, *rest):
+        got.append((shell, edges))
+        return real(shell, edges, *rest)
+
+    monkeypatch.setattr(fl.cn, "fill", spy)
+    s, _, inner = shapes.l_bracket()
+    C2Blend.fillet_report(s, _corner_edges(s, V(5, 0, 5)), 1.0, label="Bracket")
+    shell, edges = got[0]
+    assert len(edges) == 4
+    shuffled = [edges[0], edges[2], edges[1], edges[3]]
+    assert not any(v.isSame(w) for v in shuffled[0].Vertexes for w in shuffled[1].Vertexes)
+    face, _ = real(shell, shuffled)
+    assert face.isValid() and fl.cn._seam_angle(face, shell, edges) < 1e-4
+
+
+def test_boss_into_wall_every_edge():
+    """All 20 edges of the boss in a wall, R = 1: 18 blends (the boss's top and bottom
+    half circles are two edges each, one chain) and 12 corners: the box's 8, and 4
+    where a concave fillet meets two convex ones (four-sided holes)."""
+    s, _ = shapes.boss_into_wall()
+    solid, rep = C2Blend.fillet_report(s, ["Edge%d" % (i + 1) for i in range(len(s.Edges))],
+                                       1.0, label="Boss")
+    assert_valid(solid)
+    assert len(rep["blends"]) == 18 and not rep["kept_occt_faces"]
+    assert all(r["verdict"] == "G2" for r in rep["trimlines"])
+    assert sorted(c["edges"] for c in rep["corner_patches"]) == [3] * 8 + [4] * 4
+    assert all(c["g0"] < 1e-5 and c["g1"] < 1e-4 for c in rep["corner_patches"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
 def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     """At tension 1.0008 (where the task panel's tension slider put 1.0), OCCT's BOP
     check of the 12-edge box never finished: its face-face intersection of a blend and

@@ -61,6 +61,7 @@ def fill(shell, edges, degrees=MAX_DEGREES):
     each of `degrees` tried as its maximum degree until a seam is within GOOD_G1, the
     best kept. Built in a hidden temporary document, which is closed again; the active
     document is left as it was. Raises Unfilled."""
+    edges = _in_order(edges)
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
     try:
         holder = doc.addObject("Part::Feature", "Shell")
@@ -96,6 +97,26 @@ def fill(shell, edges, degrees=MAX_DEGREES):
         return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+def _in_order(edges):
+    """The hole's edges in the order they follow one another around it (each shares a
+    vertex with the next), as OCCT's filling requires: the shell lists them in its own
+    order, which is not the hole's at a corner where fillets of both kinds meet. Raises
+    Unfilled when they do not form one closed loop."""
+    rest, out = list(edges[1:]), [edges[0]]
+    end = edges[0].Vertexes[-1]
+    while rest:
+        k = next((i for i, e in enumerate(rest)
+                  if any(end.isSame(v) for v in e.Vertexes)), None)
+        if k is None:
+            raise Unfilled("the %d edges around the hole do not form one loop" % len(edges))
+        e = rest.pop(k)
+        end = next((v for v in e.Vertexes if not end.isSame(v)), end)
+        out.append(e)
+    if not any(end.isSame(v) for v in edges[0].Vertexes):
+        raise Unfilled("the %d edges around the hole do not form one loop" % len(edges))
+    return out
 
 
 def _seam_angle(face, shell, edges):
