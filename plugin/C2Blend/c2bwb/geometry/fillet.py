@@ -692,9 +692,23 @@ def _corner_check(solid, patch):
 def _patch_face(solid, patch):
     """The face of `solid` that fills the hole at the corner patch: the face nearest to
     a point of the patch near its centre."""
-    probe = Part.Vertex(patch.face.Surface.value(*patch.face.Surface.parameter(
+    return _nearest_face(solid, patch.face.Surface.value(*patch.face.Surface.parameter(
         patch.face.CenterOfMass)))
-    return min(solid.Faces, key=lambda f: f.distToShape(probe)[0])
+
+
+def _nearest_face(solid, point):
+    """The face of solid nearest to point (on or next to it): among the faces whose
+    bounding box, grown by a millionth of the solid's, holds the point (all faces if
+    none does), which spares the distance to most faces of a large solid."""
+    grow = 1e-6 * solid.BoundBox.DiagonalLength
+    near = []
+    for f in solid.Faces:
+        box = f.BoundBox  # a copy
+        box.enlarge(grow)
+        if box.isInside(point):
+            near.append(f)
+    vertex = Part.Vertex(point)
+    return min(near or solid.Faces, key=lambda f: f.distToShape(vertex)[0])
 
 
 def _occt_result_check(shape, result):
@@ -787,8 +801,7 @@ def _edge_near(face, vertex):
 
 def _find_face(solid, b):
     """The face of solid made from blend b (sewing keeps the surface, not the face)."""
-    p = Part.Vertex(b.probe)
-    return min(solid.Faces, key=lambda f: f.distToShape(p)[0])
+    return _nearest_face(solid, b.probe)
 
 
 def _rolling_ball(shape, edges, radius):
