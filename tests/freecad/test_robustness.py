@@ -62,6 +62,11 @@ BAD_FILLETS = [
         and any(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face)))],
      1.0, {}, r"Rounded\.Edge\d+: the faces meet tangentially along the edge .* no corner to "
      r"fillet"),
+    ("ShaftPlate", [lambda s: next(  # the shaft's seam: one face, joined to itself
+        "Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+        if any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))],
+     2.0, {}, r"ShaftPlate\.Edge\d+: the edge is the seam of Face\d+, where that closed face "
+     r"joins itself smoothly: there is no corner to fillet"),
 ]
 
 

@@ -99,6 +99,11 @@ def resolve_edges(shape, edges, label):
         raise C2BlendError("no edges given", label)
     for name, edge in out:
         faces = ck.edge_faces(shape, edge)
+        if len(faces) == 1 and edge.isSeam(faces[0]):
+            raise C2BlendError("the edge is the seam of %s, where that closed face joins "
+                               "itself smoothly: there is no corner to fillet; leave it out "
+                               "of the selection" % ck.element_name(shape, faces[0], "Face"),
+                               "%s.%s" % (label, name))
         if len(faces) != 2:
             raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2 "
                                "(the shape is a %s with %d solid(s); a fillet needs one "
