@@ -1010,6 +1010,24 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
+def test_a_preview_skips_the_bop_check(monkeypatch):
+    """The task panel's preview (bop=False) runs BRepCheck only: OCCT's BOP check is half
+    the time of a many-edge fillet and may run to its 30 s limit, on every slider move.
+    The line says the check was skipped; the fillet itself is the same."""
+    s, edge = shapes.shaft_on_plate()
+    full, _ = C2Blend.fillet_report(s, [edge], 2.0, label="ShaftPlate")
+
+    def no_bop(*args):
+        raise AssertionError("the BOP check ran")
+
+    monkeypatch.setattr(fl.bc, "_checked", no_bop)
+    solid, rep = fl.fillet(s, [edge], 2.0, label="ShaftPlate", bop=False)
+    assert rep["solid_check"] == "passes BRepCheck; BOP check skipped (preview)"
+    assert_valid(solid)
+    assert_g2(rep)
+    assert abs(solid.Volume - full.Volume) < 1e-9
+
+
 def test_an_unfinished_bop_check_is_reported(monkeypatch):
     """When the BOP check does not finish and no corner filling is to blame, the solid
     (valid by BRepCheck) is returned, and the report says that the BOP check did not

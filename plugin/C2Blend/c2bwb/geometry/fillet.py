@@ -47,6 +47,7 @@ from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_ro
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
 DATA_KEEP = 1e-6  # above this the boundary data are too rough for G2: keep OCCT's face
+UNCHECKED = "passes BRepCheck; BOP check skipped (preview)"  # the check line, bop=False
 ON_FACE = 10.0  # an end curve lies on its end face within this many fit tolerances
 
 
@@ -500,14 +501,15 @@ class _Touched:
         return t
 
 
-def assemble(shape, result, blended, fillet_faces, where, patches=()):
+def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
     """The solid: the faces of `result` (OCCT's fillet of `shape`) with the replaced
     rolling-ball faces dropped, the blend faces added, and every face of `shape` that a
     blend touches (sides and ends) cut anew along the blends' boundary curves; sewn,
     with the holes left at the corner `patches` (rollingball.CornerPatch, all of whose
-    fillets are blended) filled (corners.py), made a solid and checked (bopcheck.py).
-    Returns (solid, the report's line on its check). Raises C2BlendError, or
-    Unassembled for the blends at a corner that cannot be filled."""
+    fillets are blended) filled (corners.py), made a solid and checked (bopcheck.py;
+    BRepCheck only when bop is False). Returns (solid, the report's line on its check).
+    Raises C2BlendError, or Unassembled for the blends at a corner that cannot be
+    filled."""
     diag = shape.BoundBox.DiagonalLength
     tol = 1e-7 * diag
     drop = [f for b in blended for f in b.chain.faces] + [p.face for p in patches]
@@ -585,6 +587,9 @@ def assemble(shape, result, blended, fillet_faces, where, patches=()):
     solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
                     result, where)
     while True:
+        if not bop:
+            problems, line = bc.problems(solid, bop=False), UNCHECKED
+            break
         try:
             problems, line = bc.problems(solid), "passes BRepCheck and the BOP check"
             break
@@ -716,10 +721,13 @@ def _nearest_face(solid, point):
     return min(near or solid.Faces, key=lambda f: f.distToShape(vertex)[0])
 
 
-def _occt_result_check(shape, result):
+def _occt_result_check(shape, result, bop=True):
     """The report's line on a solid returned as OCCT's fillet made it (every chain kept):
     isValid() holds (_rolling_ball), but OCCT's own fillet is not checked further, and
-    can fail the BOP argument check that C2Blend's own solids pass."""
+    can fail the BOP argument check that C2Blend's own solids pass (not run when bop is
+    False)."""
+    if not bop:
+        return "OCCT's rolling-ball solid, unchanged: passes isValid(); BOP check skipped"
     try:
         problems = bc.problems(result)
     except bc.Unfinished as ex:
@@ -841,7 +849,8 @@ def _rolling_ball_failure(shape, edges, radius, msg):
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),
-           tension=1.0, label="Shape", tol_rel=1e-8, samples=32, max_samples=1024):
+           tension=1.0, label="Shape", tol_rel=1e-8, samples=32, max_samples=1024,
+           bop=True):
     """G2 (C2 data) fillet of `edges` of solid `shape` at `radius` (model units).
 
     edges: Part.Edge objects of shape, 'EdgeN' names or 1-based indices.
@@ -851,6 +860,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     tol_rel: B-spline fit tolerance relative to each blend's bounding-box diagonal. The
     fit's error in the normal must stay well below the G1 criterion (1e-8 rad): at 1e-7
     the pipe tee's normal angle was 7e-9 rad, at 1e-8 it is 3e-10.
+    bop: run OCCT's BOP check on the result (False for a preview: it is half the time
+    of a many-edge fillet, and can take its 30 s limit; BRepCheck still runs).
     Returns (Part.Solid, report dict). Raises C2BlendError naming `label` and the edge.
     The input shape is not modified.
     """
@@ -901,10 +912,10 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
             try:
                 if blended:
                     solid, solid_check = assemble(shape, result, blended, fillet_faces,
-                                                  where_all, filled)
+                                                  where_all, filled, bop)
                 else:
                     solid = result.Solids[0] if len(result.Solids) == 1 else result
-                    solid_check = _occt_result_check(shape, solid)
+                    solid_check = _occt_result_check(shape, solid, bop)
                 break
             except Unassembled as ex:
                 failed = [(b, str(ex)) for b in ex.blends]

@@ -97,7 +97,7 @@ class FilletPanel:
         self.clear_preview()
         try:
             solid, rep = fl.fillet(self.base.Shape, self.edges, radius, cont, sp, tension,
-                                   self.base.Label)
+                                   self.base.Label, bop=False)  # OK runs the full check
         except C2BlendError as ex:
             self.status.setText("Cannot fillet: %s" % ex)
             return
