@@ -737,8 +737,9 @@ c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, 
                     st = c2b_blend_eval_grid(b, 1, &u, (size_t)m, v, order, out, err);
                     have = sampled ? m + 1 : -1;
                 }
+                size_t stride = (size_t)(bf->stride ? bf->stride : 1);
                 for (int i = 0; i < m && !st; i++) {
-                    double want = sampled ? bf->samples[(size_t)i * (size_t)(bf->stride ? bf->stride : 1)]
+                    double want = sampled ? bf->samples[(size_t)i * stride]
                                   : bf->fn ? bf->fn(bf->ctx, v[i], b->t) : 0.0;
                     double got = out[((size_t)i * nd + (size_t)uentry[p]) * 3 + (size_t)c];
                     res[side * n + p] = fmax(res[side * n + p], fabs(got - want));
