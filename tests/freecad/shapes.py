@@ -134,6 +134,19 @@ def boss_into_wall():
     return s, names
 
 
+def tangent_rib():
+    """A 60 x 40 x 8 plate with a boss (r = 8 at x = 30, y = 20, 20 high) and a rib
+    (x in [28, 32], y in [28, 40], 14 high) whose face y = 28 touches the boss along a
+    line: valid by isValid(), but OCCT's BOP check finds it self-intersecting. Returns
+    (solid, name of the plate's vertical edge at x = y = 0)."""
+    s = Part.makeBox(60, 40, 8).fuse(Part.makeCylinder(8, 20, V(30, 20, 8))).fuse(
+        Part.makeBox(4, 12, 14, V(28, 28, 8))).removeSplitter().Solids[0]
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if e.BoundBox.XMax < 1e-9 and e.BoundBox.YMax < 1e-9]
+    assert len(names) == 1, names
+    return s, names[0]
+
+
 def box_into(bulge):
     """A 20 x 10 x 10 box fused with a cylinder r = 8 (axis x = 20, y = 5, z in [0, 10])
     or a sphere r = 8 (centre (20, 5, 5)) bulging out of its front; returns (solid, name

@@ -756,18 +756,15 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
 
 
 def test_invalid_input_is_named_when_the_result_fails_the_check():
-    """transformGeometry with a rotation turns the shaft's faces into B-splines that the
-    BOP check rejects (C0). The fillet then fails the check too, and the message must
-    say that the input already did, not blame the sewing alone."""
-    s, edge = shapes.shaft_on_plate()
-    pl = FreeCAD.Placement(V(1000, -500, 250), FreeCAD.Rotation(V(1, 2, 3), 37.3))
-    t = s.transformGeometry(pl.toMatrix())
-    with pytest.raises(Exception):
-        t.check(True)
-    with pytest.raises(C2BlendError, match=r"(?s)Shaft\.%s: the filleted solid is not valid after "
-                       r"sewing .*; the input solid already fails that check .*, so repair or "
-                       r"rebuild it first" % edge):
-        fl.fillet(t, [edge], 2.0, label="Shaft")
+    """A rib touching a boss along a line: the BOP check finds the input
+    self-intersecting, and the fillet of an edge far from it fails the check too. The
+    message must say that the input already did, not blame the sewing alone."""
+    s, edge = shapes.tangent_rib()
+    assert s.isValid() and "SelfIntersect" in fl.bc.problems(s)
+    with pytest.raises(C2BlendError, match=r"(?s)Rib\.%s: the filleted solid is not valid after "
+                       r"sewing .*SelfIntersect.*; the input solid already fails that check "
+                       r".*, so repair or rebuild it first" % edge):
+        fl.fillet(s, [edge], 2.0, label="Rib")
 
 
 def test_edge_of_a_face_names_the_shape_kind():
@@ -1008,6 +1005,33 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     assert_valid(solid)
     assert_corner_filled(rep, 12, 8)
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
+@pytest.mark.parametrize("convert", ["rotated", "toNurbs"])
+def test_an_input_whose_faces_are_c0(convert):
+    """The shaft on plate rotated by transformGeometry, or converted by toNurbs(): its
+    faces become B-splines with knots of full multiplicity, which OCCT's BOP check
+    flags (GeomAbs_C0) on the input already. The fillet is G2 and BRepCheck-valid; the
+    check line gives the finding and says the input has it, instead of refusing."""
+    s, edge = shapes.shaft_on_plate()
+    mid = s.getElement(edge).valueAt(0.3)  # a point on the junction circle
+    if convert == "rotated":
+        pl = FreeCAD.Placement(V(1000, -500, 250), FreeCAD.Rotation(V(1, 2, 3), 37.3))
+        s = s.transformGeometry(pl.toMatrix())
+        mid = pl.multVec(mid)
+    else:
+        s = s.toNurbs().Solids[0]
+    assert "GeomAbs_C0" in fl.bc.problems(s)
+    edge = min(("Edge%d" % (i + 1) for i in range(len(s.Edges))),
+               key=lambda n: s.getElement(n).distToShape(Part.Vertex(mid))[0])
+    assert s.getElement(edge).distToShape(Part.Vertex(mid))[0] < 1e-6
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Shaft")
+    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+    assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
+                                         "that is only C0 (")
+    assert "as in the input solid" in rep["solid_check"]
 
 
 def test_a_preview_skips_the_bop_check(monkeypatch):

@@ -48,6 +48,7 @@ from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_ro
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
 DATA_KEEP = 1e-6  # above this the boundary data are too rough for G2: keep OCCT's face
 UNCHECKED = "passes BRepCheck; BOP check skipped (preview)"  # the check line, bop=False
+C0_FINDING = "GeomAbs_C0"  # the BOP check's finding on geometry that is only C0
 ON_FACE = 10.0  # an end curve lies on its end face within this many fit tolerances
 
 
@@ -607,6 +608,9 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
                            % ", ".join(f.patch.where() for f in redo) if redo else ""))
                 break
             solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where)
+    inherited = _inherited(problems, shape, solid) if problems else None
+    if inherited:
+        problems, line = None, inherited
     if problems:
         msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
                % problems)
@@ -616,6 +620,23 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
                     "rebuild it first" % orig)
         raise C2BlendError(msg, where, "validity")
     return solid, line
+
+
+def _inherited(problems, shape, solid):
+    """The report's line when the BOP check's only findings (`problems`) are faces or
+    edges whose geometry is only C0 (GeomAbs_C0), the input solid has such geometry
+    too (B-spline faces with knots of full multiplicity, as after toNurbs() or from
+    some STEP files) and BRepCheck passes: those are the input's faces, cut anew but
+    the same surfaces, not a defect of the fillet. None otherwise."""
+    kinds = {f.rsplit(" (", 1)[0] for f in problems.split("; ")}
+    if not all(k.endswith(C0_FINDING) for k in kinds):
+        return None
+    orig = _input_problems(shape)
+    if not orig or C0_FINDING not in orig or bc.problems(solid, bop=False):
+        return None
+    return ("passes BRepCheck; the BOP check finds geometry that is only C0 (%s), as in "
+            "the input solid (%s): Boolean operations on those faces may fail"
+            % (problems, orig))
 
 
 class _Fill:
