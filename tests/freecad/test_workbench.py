@@ -1034,6 +1034,25 @@ def test_an_input_whose_faces_are_c0(convert):
     assert "as in the input solid" in rep["solid_check"]
 
 
+def test_runs_split_away_from_the_face_change_are_kept_with_that_reason():
+    """The slot plate converted by toNurbs(): OCCT's fillet of the slot's rim on the
+    B-spline walls splits its faces 1e-2 away from where the wall changes from plane to
+    half cylinder, so the runs' blends cannot meet. The rim is kept as OCCT made it, and
+    the reason says so rather than blaming the walls' curvatures, which agree."""
+    s, names = shapes.slot_plate()
+    points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter
+                                      + 0.37 * s.getElement(n).LastParameter) for n in names]
+    ns = s.toNurbs().Solids[0]
+    edges = [min(("Edge%d" % (i + 1) for i in range(len(ns.Edges))),
+                 key=lambda n: ns.getElement(n).distToShape(Part.Vertex(p))[0]) for p in points]
+    solid, rep = C2Blend.fillet_report(ns, edges, 1.0, label="Slot")
+    assert solid.isValid() and not rep["blends"]
+    (kept,) = rep["kept_occt_faces"]
+    assert re.match(r"OCCT's fillet splits its faces away from where a side changes face "
+                    r"\(as on B-spline walls\), so the runs' end sections lie \S+ apart on "
+                    r"the trimlines$", kept["reason"]), kept
+
+
 def test_a_preview_skips_the_bop_check(monkeypatch):
     """The task panel's preview (bop=False) runs BRepCheck only: OCCT's BOP check is half
     the time of a many-edge fillet and may run to its 30 s limit, on every slider move.

@@ -262,8 +262,13 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
     blends = [solve_face(r, radius, where, continuity, shape, tension, tol_rel, samples,
                          max_samples, fillet_faces) for r in runs]
     for a, b in zip(blends, blends[1:] + (blends[:1] if closed else [])):
-        gap, turn = _junction(a.surface, b.surface)
-        if gap > ON_FACE * max(a.fit["tolerance"], b.fit["tolerance"]):
+        gap, turn, ends_gap = _junction(a.surface, b.surface)
+        tol = ON_FACE * max(a.fit["tolerance"], b.fit["tolerance"])
+        if ends_gap > tol:
+            raise NotReplaced("OCCT's fillet splits its faces away from where a side "
+                              "changes face (as on B-spline walls), so the runs' end "
+                              "sections lie %.1e apart on the trimlines" % ends_gap)
+        if gap > tol:
             raise NotReplaced("where a side changes face or crosses a knot line, the faces' "
                               "curvatures across the fillet differ, so no blend is G2 to "
                               "both there (the blends of the two runs would be %.1e apart)"
@@ -280,16 +285,18 @@ JUNCTION_U = 16  # intervals in u at which two runs' blends are compared at a ju
 
 
 def _junction(sa, sb):
-    """(largest distance, largest normal angle) between the end section of surface sa
-    (its last v) and the start section of sb (its first v), at JUNCTION_U + 1 values of
-    u."""
+    """(largest distance, largest normal angle, largest distance at the trimlines, u = 0
+    and 1) between the end section of surface sa (its last v) and the start section of
+    sb (its first v), at JUNCTION_U + 1 values of u."""
     va, vb = sa.bounds()[3], sb.bounds()[2]
-    gap = turn = 0.0
+    gap = turn = ends_gap = 0.0
     for i in range(JUNCTION_U + 1):
         u = i / JUNCTION_U
-        gap = max(gap, (sa.value(u, va) - sb.value(u, vb)).Length)
+        d = (sa.value(u, va) - sb.value(u, vb)).Length
+        gap = max(gap, d)
+        ends_gap = max(ends_gap, d) if i in (0, JUNCTION_U) else ends_gap
         turn = max(turn, angle(sa.normal(u, va), sb.normal(u, vb)))
-    return gap, turn
+    return gap, turn, ends_gap
 
 
 OVER_V, OVER_U = 16, 12  # samples along and across (the half next to each face)
