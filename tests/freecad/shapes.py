@@ -134,6 +134,20 @@ def boss_into_wall():
     return s, names
 
 
+def flush_rib():
+    """A 60 x 40 x 8 plate with a rib (x in [28, 32], y in [26, 40], 14 high) flush with
+    its side y = 40. Returns (solid, [name of the plate's top edge at y = 40 from x = 0
+    to 28, name of the rib's foot at x = 28]): a convex and a concave edge meeting at
+    the vertex (28, 40, 8), whose third edge (the rib's) is not filleted."""
+    s = Part.makeBox(60, 40, 8).fuse(Part.makeBox(4, 14, 14, V(28, 26, 8))).removeSplitter()
+    at = [i for i, e in enumerate(s.Edges)
+          if any((v.Point - V(28, 40, 8)).Length < 1e-9 for v in e.Vertexes)]
+    top = [i for i in at if s.Edges[i].BoundBox.XMin < 1e-9]
+    foot = [i for i in at if s.Edges[i].BoundBox.YLength > 1 and s.Edges[i].BoundBox.ZLength < 1e-9]
+    assert len(top) == len(foot) == 1, (top, foot)
+    return s, ["Edge%d" % (top[0] + 1), "Edge%d" % (foot[0] + 1)]
+
+
 def tangent_rib():
     """A 60 x 40 x 8 plate with a boss (r = 8 at x = 30, y = 20, 20 high) and a rib
     (x in [28, 32], y in [28, 40], 14 high) whose face y = 28 touches the boss along a

@@ -948,6 +948,23 @@ def test_a_corner_of_convex_and_concave_fillets():
     occt_jump(s, corner, 1.0)
 
 
+def test_a_convex_and_a_concave_fillet_at_a_vertex_are_kept_with_the_reason():
+    """A rib flush with the plate's side: the plate's top edge (convex) and the rib's foot
+    (concave) meet at a vertex whose third edge is not filleted. OCCT joins the two
+    fillets with a face that meets both at an angle (a crease of 0.03 to 0.1 rad), not a
+    corner patch a plate filling could replace. Both fillets are kept, and the report
+    names that face by its position and says why (it once named every selected edge)."""
+    s, edges = shapes.flush_rib()
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Rib")
+    assert solid.isValid() and not rep["blends"]
+    reasons = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
+    face = [w for w in reasons if w.startswith("Rib, OCCT's face at (")]
+    assert len(face) == 1 and reasons[face[0]].startswith(
+        "it is OCCT's face between 2 fillets at a vertex, which it meets at an angle")
+    assert {"Rib.%s" % e for e in edges} <= set(reasons)
+    assert rep["verdict"] == "G1"
+
+
 def test_a_hole_listed_out_of_order_is_filled(monkeypatch):
     """OCCT's filling takes the hole's edges only in the order they follow one another;
     the sewn shell lists them in its own order. The L bracket's four-sided hole, its

@@ -840,6 +840,13 @@ def _edge_near(face, vertex):
     return min(face.Edges, key=lambda e: e.distToShape(vertex)[0])
 
 
+def _occt_face_at(label, face):
+    """'Label, OCCT's face at (x, y, z)': a face of OCCT's fillet that no selected edge
+    is nearest to (such as the face between two fillets at a vertex), for messages."""
+    p = face.CenterOfMass
+    return "%s, OCCT's face at (%.4g, %.4g, %.4g)" % (label, p.x, p.y, p.z)
+
+
 def _find_face(solid, b):
     """The face of solid made from blend b (sewing keeps the surface, not the face)."""
     return _nearest_face(solid, b.probe)
@@ -914,7 +921,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                                   for f in fillet_faces])
     wheres = _where(label, names, all_chains)
     for chain in all_chains:
-        where = wheres.get(id(chain), "%s (a corner patch)" % where_all)
+        where = wheres.get(id(chain)) or _occt_face_at(label, chain.faces[0])
         if chain.corner:
             kept.append({"where": where, "reason": chain.corner})
             continue

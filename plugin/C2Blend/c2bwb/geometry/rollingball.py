@@ -114,6 +114,12 @@ class RollingBallFace:
             else:  # an end face, or another fillet met at an angle (a mitre)
                 self.ends.append((e, nb))
         self.patch = len(self.contacts) != 2 and len(self.links) >= 2
+        met = [nb for _, nb in self.ends if any(nb.isSame(g) for g in fillet_faces)]
+        if self.corner is None and len(self.contacts) != 2 and len(met) >= 2 \
+                and not self.patch:
+            self.corner = ("it is OCCT's face between %d fillets at a vertex, which it "
+                           "meets at an angle, not tangent: no corner patch that a filling "
+                           "replaces, so the fillets there are kept with it" % len(met))
         if self.corner is None and len(self.contacts) != 2:
             self.corner = ("it has %d tangent contact edges instead of 2 (a corner "
                            "patch, or a fillet that uses up a whole face)"
