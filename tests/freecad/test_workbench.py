@@ -977,7 +977,7 @@ def test_a_hole_listed_out_of_order_is_filled(monkeypatch):
         return real(shell, edges, *rest)
 
     monkeypatch.setattr(fl.cn, "fill", spy)
-    s, _, inner = shapes.l_bracket()
+    s, _, _ = shapes.l_bracket()
     C2Blend.fillet_report(s, _corner_edges(s, V(5, 0, 5)), 1.0, label="Bracket")
     shell, edges = got[0]
     assert len(edges) == 4
