@@ -730,9 +730,9 @@ c2b_status c2b_blend_boundary_residual(const c2b_blend *b, int ns, double *res, 
                 const c2b_bfunc *bf = &b->pb.data[c][side][p];
                 int sampled = bf->samples && !bf->fn;
                 int m = sampled ? bf->n_samples : ns, iv = sampled && dom->periodic ? m : m - 1;
-                for (int i = 0; i < m; i++)
-                    v[i] = dom->v0 + L * i / iv;
                 if (have != (sampled ? m + 1 : -1)) {
+                    for (int i = 0; i < m; i++)
+                        v[i] = dom->v0 + L * i / iv;
                     double u = side;
                     st = c2b_blend_eval_grid(b, 1, &u, (size_t)m, v, order, out, err);
                     have = sampled ? m + 1 : -1;

@@ -5,8 +5,9 @@ bopcheck with FreeCAD's library folder as its argument (it imports no C2Blend mo
 It reads requests from stdin, each a line with a byte count followed by that many bytes
 of BREP text, checks the shape (TopoShape.check(True)) and answers each with one line of
 JSON on its stdout: {"found": null} when the shape passes, {"found": "..."} with OCCT's
-findings otherwise. It ends when stdin closes, that is when its parent ends, without FreeCAD's clean-up
-(os._exit), so that it never saves FreeCAD's user settings over the parent's.
+findings otherwise. It ends when stdin closes, that is when its parent ends, without
+FreeCAD's clean-up (os._exit), so that it never saves FreeCAD's user settings over the
+parent's.
 """
 import json
 import os

@@ -294,7 +294,8 @@ def _junction(sa, sb):
         u = i / JUNCTION_U
         d = (sa.value(u, va) - sb.value(u, vb)).Length
         gap = max(gap, d)
-        ends_gap = max(ends_gap, d) if i in (0, JUNCTION_U) else ends_gap
+        if i in (0, JUNCTION_U):
+            ends_gap = max(ends_gap, d)
         turn = max(turn, angle(sa.normal(u, va), sb.normal(u, vb)))
     return gap, turn, ends_gap
 
@@ -594,10 +595,9 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
                  for p, loop in zip(patches, loops)]
     solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
                     result, where)
-    while True:
-        if not bop:
-            problems, line = bc.problems(solid, bop=False), UNCHECKED
-            break
+    if not bop:
+        problems, line = bc.problems(solid, bop=False), UNCHECKED
+    while bop:
         try:
             problems, line = bc.problems(solid), "passes BRepCheck and the BOP check"
             break
@@ -615,13 +615,13 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
                            % ", ".join(f.patch.where() for f in redo) if redo else ""))
                 break
             solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where)
-    inherited = _inherited(problems, shape, solid) if problems else None
+    orig = _input_problems(shape) if problems else None
+    inherited = _inherited(problems, orig, solid) if problems else None
     if inherited:
         problems, line = None, inherited
     if problems:
         msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
                % problems)
-        orig = _input_problems(shape)
         if orig:
             msg += ("; the input solid already fails that check (%s), so repair or "
                     "rebuild it first" % orig)
@@ -629,16 +629,15 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
     return solid, line
 
 
-def _inherited(problems, shape, solid):
+def _inherited(problems, orig, solid):
     """The report's line when the BOP check's only findings (`problems`) are faces or
     edges whose geometry is only C0 (GeomAbs_C0), the input solid has such geometry
-    too (B-spline faces with knots of full multiplicity, as after toNurbs() or from
-    some STEP files) and BRepCheck passes: those are the input's faces, cut anew but
-    the same surfaces, not a defect of the fillet. None otherwise."""
+    too (`orig`, its findings: B-spline faces with knots of full multiplicity, as after
+    toNurbs()) and BRepCheck passes: those are the input's faces, cut anew but the
+    same surfaces, not a defect of the fillet. None otherwise."""
     kinds = {f.rsplit(" (", 1)[0] for f in problems.split("; ")}
     if not all(k.endswith(C0_FINDING) for k in kinds):
         return None
-    orig = _input_problems(shape)
     if not orig or C0_FINDING not in orig or bc.problems(solid, bop=False):
         return None
     return ("passes BRepCheck; the BOP check finds geometry that is only C0 (%s), as in "

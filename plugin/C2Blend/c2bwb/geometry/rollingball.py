@@ -99,6 +99,7 @@ class RollingBallFace:
         self.face = face
         self.contacts, self.ends, self.links, self.corners = [], [], [], []
         self.corner = None
+        met = 0  # fillets met at an angle
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
             if not nbrs:  # a seam
@@ -113,13 +114,12 @@ class RollingBallFace:
                 self.contacts.append((e, nb))
             else:  # an end face, or another fillet met at an angle (a mitre)
                 self.ends.append((e, nb))
+                met += 1 if is_fillet else 0
         self.patch = len(self.contacts) != 2 and len(self.links) >= 2
-        met = [nb for _, nb in self.ends if any(nb.isSame(g) for g in fillet_faces)]
-        if self.corner is None and len(self.contacts) != 2 and len(met) >= 2 \
-                and not self.patch:
+        if self.corner is None and len(self.contacts) != 2 and met >= 2 and not self.patch:
             self.corner = ("it is OCCT's face between %d fillets at a vertex, which it "
                            "meets at an angle, not tangent: no corner patch that a filling "
-                           "replaces, so the fillets there are kept with it" % len(met))
+                           "replaces, so the fillets there are kept with it" % met)
         if self.corner is None and len(self.contacts) != 2:
             self.corner = ("it has %d tangent contact edges instead of 2 (a corner "
                            "patch, or a fillet that uses up a whole face)"
