@@ -314,6 +314,16 @@ def group_bad(tool):
          "property double k1\nproperty double k2\nelement face 1\nproperty list uchar int vertex_indices\n"
          "end_header\n0 0 0 0 0\n1 0 0 nan 0\n0 1 0 0 0\n3 0 1 2\n", [],
          "nank.ply, line 13: vertex 1: non-finite analytic curvature k1 = nan"),
+        ("list length out of range in the vertex element (PLY)", "listlen.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+         "property list int double extra\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0 0\n1 0 0 -5e108\n0 1 0 0\n3 0 1 2\n", [],
+         "listlen.ply, line 12: vertex 1: bad list length -5e+108"),
+        ("non-integer list length in an element not used (PLY)", "skiplen.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+         "element face 1\nproperty list uchar int vertex_indices\nelement edge 1\n"
+         "property list int int vertices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2.5 0 1\n", [],
+         "skiplen.ply, line 16: edge 0: bad list length 2.5"),
         ("PLY values missing", "few.ply",
          "ply\nformat ascii 1.0\nelement vertex 2\nproperty double x\nproperty double y\nproperty double z\n"
          "element face 0\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0\n", [],

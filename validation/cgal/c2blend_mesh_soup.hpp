@@ -425,6 +425,15 @@ public:
     }
     return 0;
   }
+  // The length of a list property (its count, of type t): an integer in [0, 1e6);
+  // throws Input_error naming the instance otherwise.
+  std::size_t length(Ply_type t)
+  {
+    double c = value(t);
+    if (!(c >= 0 && c == std::floor(c) && c < 1e6))
+      throw Input_error(soup_.where(line()) + what_ + format(": bad list length %g", c));
+    return static_cast<std::size_t>(c);
+  }
 
 private:
   std::istream &in_;
@@ -524,8 +533,7 @@ void read_ply(std::istream &in, Soup &soup)
         for (std::size_t i = 0; i < e.props.size(); i++) {
           const Ply_property &p = e.props[i];
           if (p.list) {
-            double n = rd.value(p.count_type);
-            for (long j = 0; j < static_cast<long>(n); j++)
+            for (std::size_t j = rd.length(p.count_type); j > 0; j--)
               rd.value(p.type);
           } else {
             val[i] = rd.value(p.type);
@@ -571,13 +579,7 @@ void read_ply(std::istream &in, Soup &soup)
         std::vector<std::size_t> face;
         for (std::size_t i = 0; i < e.props.size(); i++) {
           const Ply_property &p = e.props[i];
-          std::size_t n = 1;
-          if (p.list) {
-            double c = rd.value(p.count_type);
-            if (!(c >= 0 && c == std::floor(c) && c < 1e6))
-              throw Input_error(soup.where(rd.line()) + format("face %zu: bad list length %g", f, c));
-            n = static_cast<std::size_t>(c);
-          }
+          std::size_t n = p.list ? rd.length(p.count_type) : 1;
           for (std::size_t j = 0; j < n; j++) {
             double x = rd.value(p.type);
             if (static_cast<int>(i) != cidx)
@@ -596,12 +598,7 @@ void read_ply(std::istream &in, Soup &soup)
       for (std::size_t i = 0; i < e.count; i++) {
         rd.begin(e.name + format(" %zu", i));
         for (const Ply_property &p : e.props) {
-          std::size_t n = 1;
-          if (p.list) {
-            double c = rd.value(p.count_type);
-            n = c >= 0 && c < 1e9 ? static_cast<std::size_t>(c) : 0;
-          }
-          for (std::size_t j = 0; j < n; j++)
+          for (std::size_t j = p.list ? rd.length(p.count_type) : 1; j > 0; j--)
             rd.value(p.type);
         }
         rd.end();
