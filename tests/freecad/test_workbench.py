@@ -1051,11 +1051,14 @@ def test_an_input_whose_faces_are_c0(convert):
     assert "as in the input solid" in rep["solid_check"]
 
 
-def test_runs_split_away_from_the_face_change_are_kept_with_that_reason():
+def test_runs_end_where_the_contact_crosses_the_face_change():
     """The slot plate converted by toNurbs(): OCCT's fillet of the slot's rim on the
     B-spline walls splits its faces 1e-2 away from where the wall changes from plane to
-    half cylinder, so the runs' blends cannot meet. The rim is kept as OCCT made it, and
-    the reason says so rather than blaming the walls' curvatures, which agree."""
+    half cylinder (at x = 12 and 28). The runs' blends end where the exact contact crosses
+    that edge, so they meet: the rim is G2 on every trimline. Facts: the ball of R = 1
+    that touches the wall on that line touches it at z = 4 and the top 1 outside it (at
+    y = 5 or 15, z = 5), where the result has vertices; and the blends are those of the
+    same part with analytic faces, on which OCCT splits at the line (to 1e-6)."""
     s, names = shapes.slot_plate()
     points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter
                                       + 0.37 * s.getElement(n).LastParameter) for n in names]
@@ -1063,11 +1066,25 @@ def test_runs_split_away_from_the_face_change_are_kept_with_that_reason():
     edges = [min(("Edge%d" % (i + 1) for i in range(len(ns.Edges))),
                  key=lambda n: ns.getElement(n).distToShape(Part.Vertex(p))[0]) for p in points]
     solid, rep = C2Blend.fillet_report(ns, edges, 1.0, label="Slot")
-    assert solid.isValid() and not rep["blends"]
-    (kept,) = rep["kept_occt_faces"]
-    assert re.match(r"OCCT's fillet splits its faces away from where a side changes face "
-                    r"\(as on B-spline walls\), so the runs' end sections lie \S+ apart on "
-                    r"the trimlines$", kept["reason"]), kept
+    # BRepCheck passes; the BOP check's C0 findings are the input's (see the test above)
+    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert "as in the input solid" in rep["solid_check"]
+    assert_g2(rep)
+    assert len(rep["blends"]) == 4 and not rep["kept_occt_faces"]
+    for x in (12, 28):
+        for y, dy in ((6, -1), (14, 1)):
+            for p in (V(x, y, 4), V(x, y + dy, 5)):
+                assert min((v.Point - p).Length for v in solid.Vertexes) < 1e-7, p
+    plain, _ = C2Blend.fillet_report(s, names, 1.0, label="Slot")
+    # the blends span z = 4 to 5; the top face lies at z = 5, the walls below z = 4
+    blends = [f for f in solid.Faces if f.BoundBox.ZMin > 4 - 1e-7 and f.BoundBox.ZLength > 0.5]
+    assert len(blends) == 4
+    for f in blends:
+        u0, u1, v0, v1 = f.ParameterRange
+        for i in range(7):
+            for j in range(7):
+                p = f.valueAt(u0 + (u1 - u0) * i / 6, v0 + (v1 - v0) * j / 6)
+                assert plain.distToShape(Part.Vertex(p))[0] < 1e-6, p
 
 
 def test_a_preview_skips_the_bop_check(monkeypatch):

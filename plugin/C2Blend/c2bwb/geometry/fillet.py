@@ -39,7 +39,7 @@ from .contact import Contact, ContactError
 from . import bopcheck as bc
 from . import corners as cn
 from . import ends
-from .knots import split_at_knots
+from .knots import at_face_changes, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces)
 from .surface import Frame, angle, frame_at_point, off_surface, project
@@ -253,21 +253,27 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
     v-coupled PDE blend reproduces (its series stall, and blends of the runs solved apart
     do not meet). Each run takes the pointwise blend (trimlines.pointwise_shape), whose
     section at a junction depends on the data there only: the runs meet wherever both
-    sides give the same data there. They do not where the faces' normal curvatures
-    across the fillet differ (a side face's edge crossing the trimline obliquely): no
-    surface is G2 to both there. closed: the last run meets the first. Returns
-    [Blended], each with group set. Raises NotReplaced saying why the chain cannot be
-    replaced."""
+    sides give the same data there. Where a side changes face, the runs first end where
+    the exact contact crosses the edge between its faces (knots.at_face_changes). They
+    do not meet where the faces' normal curvatures across the fillet differ (a side
+    face's edge crossing the trimline obliquely): no surface is G2 to both there.
+    closed: the last run meets the first. Returns [Blended], each with group set.
+    Raises NotReplaced saying why the chain cannot be replaced."""
     shape = pointwise_shape(continuity)
+    try:
+        runs = at_face_changes(runs, closed, radius)
+    except ContactError as ex:
+        raise NotReplaced(str(ex)) from None
     blends = [solve_face(r, radius, where, continuity, shape, tension, tol_rel, samples,
                          max_samples, fillet_faces) for r in runs]
     for a, b in zip(blends, blends[1:] + (blends[:1] if closed else [])):
         gap, turn, ends_gap = _junction(a.surface, b.surface)
         tol = ON_FACE * max(a.fit["tolerance"], b.fit["tolerance"])
         if ends_gap > tol:
-            raise NotReplaced("OCCT's fillet splits its faces away from where a side "
-                              "changes face (as on B-spline walls), so the runs' end "
-                              "sections lie %.1e apart on the trimlines" % ends_gap)
+            raise NotReplaced("where a side changes face, the runs' end sections lie "
+                              "%.1e apart on the trimlines: the exact contact's crossing "
+                              "of the edge between the side's faces was not found, and "
+                              "OCCT splits its fillet away from it" % ends_gap)
         if gap > tol:
             raise NotReplaced("where a side changes face or crosses a knot line, the faces' "
                               "curvatures across the fillet differ, so no blend is G2 to "

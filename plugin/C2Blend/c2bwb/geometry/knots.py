@@ -9,6 +9,11 @@ interpolating spline through 7 points, 1024 samples leave 4e-6 (relative), too r
 a G2 blend. Between two crossings the data are analytic. So a chain whose data are too
 rough is cut at the crossings into runs, as a chain whose side changes face is
 (rollingball.Run), and each run gets the pointwise blend (fillet.solve_runs).
+
+Where a side changes face, the runs must end where the exact contact crosses the edge
+between the two faces, not at OCCT's split between its fillet faces: on B-spline walls
+OCCT splits 1e-2 away from it, and the two runs' end sections would not meet
+(at_face_changes).
 """
 import Part
 
@@ -128,6 +133,91 @@ def crossings(contact, k):
         if lo + tol < a < hi - tol and all(abs(a - b) > tol for b in cuts):
             cuts.append(a)
     return on, cuts
+
+
+MAX_SHIFT = 0.5  # a junction moves by at most this fraction of its runs' end sections
+
+
+def _secant(f, a0, a1):
+    """a with f(a) = 0 by the secant method from a0 and a1 (no bracket: the root may lie
+    outside the guide's range), to 1e-12 relative (f, an exact contact solved by
+    Newton's method, is noisy at rounding); None if it does not converge."""
+    f0, f1 = f(a0), f(a1)
+    for _ in range(MAX_ROOT):
+        if f1 == f0:
+            return a1 if f1 == 0.0 else None
+        a0, a1, f0 = a1, a1 - f1 * (a1 - a0) / (f1 - f0), f1
+        if abs(a1 - a0) <= 1e-12 * (1.0 + abs(a1)):
+            return a1
+        f1 = f(a1)
+    return None
+
+
+def _shared_edge(f, g, near):
+    """The edge of face f that face g shares with it nearest to the point near, or None."""
+    common = [e for e in f.Edges if any(e.isSame(x) for x in g.Edges)]
+    return min(common, key=lambda e: e.distToShape(near)[0], default=None)
+
+
+def _crossing(run, at_end, side, edge, radius):
+    """The guide parameter of the section of run at its end (at_end) or start at which
+    the exact contact on side `side` crosses edge (the edge's curve, extended), or None.
+    The offset of the contact from that curve along the spine changes sign there."""
+    sec = run.sections[-1 if at_end else 0]
+    contact = Contact(Run([sec], (True, True), ends=[], corners=[]), radius)
+    curve = edge.Curve
+
+    def offset(a):
+        p1, p2, _, t, _, _ = contact.solve(0, a)
+        p = (p1, p2)[side]
+        return (p - curve.value(curve.parameter(p))).dot(t)
+
+    a0 = sec.a_end if at_end else sec.a_start
+    span = sec.a_end - sec.a_start
+    a = _secant(offset, a0, a0 - 1e-3 * span if at_end else a0 + 1e-3 * span)
+    if a is None or abs(a - a0) > MAX_SHIFT * abs(span):
+        return None
+    return a
+
+
+def at_face_changes(runs, closed, radius):
+    """The runs of a chain whose side changes face, with each junction where a side
+    changes face moved to where the exact contact on that side crosses the edge between
+    the two faces: both runs' end sections are then the same ball, touching both faces
+    there. OCCT's split between its fillet faces (where the runs end) lies on that edge
+    for analytic faces but up to 1e-2 away on B-spline faces. A junction stays where it
+    is when the faces share no edge, or when the crossing is not found within
+    MAX_SHIFT of the end sections. Returns [Run]. Raises contact.ContactError."""
+    runs = list(runs)
+    pairs = list(zip(range(len(runs)), range(1, len(runs)))) + \
+        ([(len(runs) - 1, 0)] if closed and len(runs) > 1 else [])
+    for i, j in pairs:
+        a, b = runs[i], runs[j]
+        side = next((s for s in (0, 1) if not a.sides[s].isSame(b.sides[s])), None)
+        if side is None:
+            continue  # a cut at a knot line: the side stays on its face
+        sec = a.sections[-1]
+        near = Part.Vertex(sec.rbf.point(sec.a_end, (sec.c1, sec.c2)[side]))
+        edge = _shared_edge(a.sides[side], b.sides[side], near)
+        if edge is None:
+            continue
+        end, start = _crossing(a, True, side, edge, radius), _crossing(b, False, side, edge,
+                                                                        radius)
+        if end is None or start is None:
+            continue
+        runs[i] = _moved(a, -1, end)
+        runs[j] = _moved(b, 0, start)
+    return runs
+
+
+def _moved(run, k, a):
+    """run with the end (k = -1) or start (k = 0) of its end section moved to guide
+    parameter a."""
+    sec = run.sections[k]
+    bounds = (sec.a_start, a) if k == -1 else (a, sec.a_end)
+    secs = list(run.sections)
+    secs[k] = Section(sec.rbf, *bounds, sec.c1, sec.c2, sec.sides)
+    return Run(secs, run.junctions, ends=run.ends, corners=run.corners)
 
 
 def split_at_knots(chain, radius):
