@@ -363,6 +363,29 @@ def ruled_rounded_loft():
     return s, names
 
 
+def rounded_pocket():
+    """A 40 x 20 x 6 block with a pocket 3 deep: a 16 x 10 rectangle from (12, 5) whose
+    corners are rounded at r = 2.5 (OCCT's fillet). Returns (solid, names of the pocket's
+    rim edges on the top face)."""
+    p = Part.makeBox(16, 10, 10, V(12, 5, 3))
+    p = p.makeFillet(2.5, [e for e in p.Edges if e.BoundBox.ZLength > 1])
+    s = Part.makeBox(40, 20, 6).cut(p).removeSplitter()
+    names = [n for n in _edges_at(s, 6.0)
+             if 1 < s.getElement(n).BoundBox.XMin and s.getElement(n).BoundBox.XMax < 39]
+    assert len(names) == 8, names
+    return s, names
+
+
+def as_nurbs(s, names):
+    """(s.toNurbs() as a solid, the names of its edges at the given edges of s)."""
+    points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter
+                                      + 0.37 * s.getElement(n).LastParameter) for n in names]
+    ns = s.toNurbs().Solids[0]
+    return ns, [min(("Edge%d" % (i + 1) for i in range(len(ns.Edges))),
+                    key=lambda n: ns.getElement(n).distToShape(Part.Vertex(p))[0])
+                for p in points]
+
+
 def slot_plate():
     """A 40 x 20 x 5 plate with a through slot: a stadium of half-width 4 whose centre
     line runs from (12, 10) to (28, 10). Returns (solid, names of the slot's edges on

@@ -998,7 +998,9 @@ def test_boss_into_wall_every_edge():
     assert len(rep["blends"]) == 18 and not rep["kept_occt_faces"]
     assert all(r["verdict"] == "G2" for r in rep["trimlines"])
     assert sorted(c["edges"] for c in rep["corner_patches"]) == [3] * 8 + [4] * 4
-    assert all(c["g0"] < 1e-5 and c["g1"] < 1e-4 for c in rep["corner_patches"])
+    # OCCT's plate on a four-sided hole here turns from the blends by 3e-5 to 2e-4 rad,
+    # erratically: boundaries 1e-12 apart gave either (corners.py)
+    assert all(c["g0"] < 1e-5 and c["g1"] < 5e-4 for c in rep["corner_patches"])
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
@@ -1060,11 +1062,7 @@ def test_runs_end_where_the_contact_crosses_the_face_change():
     y = 5 or 15, z = 5), where the result has vertices; and the blends are those of the
     same part with analytic faces, on which OCCT splits at the line (to 1e-6)."""
     s, names = shapes.slot_plate()
-    points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter
-                                      + 0.37 * s.getElement(n).LastParameter) for n in names]
-    ns = s.toNurbs().Solids[0]
-    edges = [min(("Edge%d" % (i + 1) for i in range(len(ns.Edges))),
-                 key=lambda n: ns.getElement(n).distToShape(Part.Vertex(p))[0]) for p in points]
+    ns, edges = shapes.as_nurbs(s, names)
     solid, rep = C2Blend.fillet_report(ns, edges, 1.0, label="Slot")
     # BRepCheck passes; the BOP check's C0 findings are the input's (see the test above)
     assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
@@ -1690,6 +1688,43 @@ def test_sample_in_a_gap_between_guide_pieces():
     for face, p in ((chain.sides[0], p1), (chain.sides[1], p2)):
         assert abs(off_surface(face.Surface, c) - 1.5) < 1e-10
         assert abs((c - p).Length - 1.5) < 1e-10
+
+
+def test_arc_length_near_clustered_guide_knots():
+    """The rounded pocket's rim after toNurbs(): OCCT's rolling-ball face at one corner
+    is degree 14 with knots clustered at one end (spans down to 1e-3 of the arc). Arc
+    length integrated there by a fixed Gauss rule put the first sample 1e-7 off, the
+    data stalled at 5.7e-9 (relative) and the blends' normals at that junction were
+    3.1e-8 rad apart: OCCT's rim was kept. Integrated adaptively, the samples are
+    uniform: at each corner the ball's centre runs on the circle of radius 2.5 + 1
+    about the corner's axis at z = 5, and equal arc lengths give equal angles (to
+    1e-10 rad). The rim is G2."""
+    from c2bwb.geometry.contact import Contact
+    from c2bwb.geometry.knots import at_face_changes
+    from c2bwb.geometry.rollingball import RollingBallFace, chains, new_faces
+    s, names = shapes.as_nurbs(*shapes.rounded_pocket())
+    res = s.makeFillet(1.0, [s.getElement(n) for n in names])
+    ff = new_faces(s, res)
+    (chain,), _ = chains([RollingBallFace(res, f, ff) for f in ff])
+    arcs = 0
+    for run in at_face_changes(chain.runs, chain.closed, 1.0):
+        con = Contact(run, 1.0)
+        cs = [con.at_length(con.length * j / 64)[2] for j in range(65)]
+        axis = V(12 + 2.5 if cs[32].x < 20 else 28 - 2.5, 5 + 2.5 if cs[32].y < 10 else 15 - 2.5, 0)
+        radii = [math.hypot(c.x - axis.x, c.y - axis.y) for c in cs]
+        if max(radii) - min(radii) > 1e-6:
+            continue  # a straight run
+        arcs += 1
+        assert max(abs(r - 3.5) for r in radii) < 1e-9 and max(abs(c.z - 5) for c in cs) < 1e-9
+        angles = [math.atan2(c.y - axis.y, c.x - axis.x) for c in cs]
+        steps = [(b - a + math.pi) % (2 * math.pi) - math.pi for a, b in zip(angles, angles[1:])]
+        assert max(steps) - min(steps) < 1e-10, (min(steps), max(steps))
+        assert abs(sum(steps)) == pytest.approx(math.pi / 2, abs=1e-9)
+    assert arcs == 4
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Pocket")
+    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert_g2(rep)
+    assert len(rep["blends"]) == 8 and not rep["kept_occt_faces"]
 
 
 def test_boss_on_a_seam_is_kept():
