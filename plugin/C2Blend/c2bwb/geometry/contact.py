@@ -38,7 +38,7 @@ NEWTON_DONE = 1e-10  # relative step after which one more Newton step is below r
 SUB_PER_SPAN = 2  # Gauss subintervals per knot span of the guide along the fillet
 MIN_SUB = 4  # ... and at least this many per section (each is halved at least once)
 QUAD_REL = 1e-12  # a subinterval is halved until its halves' integrals sum to its own
-MAX_HALVINGS = 12  # ... to this relative difference, at most this many times
+MAX_HALVINGS = 12  # ... to this fraction of the section's length, at most this many times
 WARM = 0.05  # start Newton from the last solution within this fraction of the section
 
 # 5-point Gauss-Legendre nodes and weights on [0, 1]
@@ -209,29 +209,33 @@ class Contact:
         spans = list(zip(spans, spans[1:]))
         if sec.a_end < sec.a_start:
             spans = [(b, a) for a, b in reversed(spans)]
+        subs = [[(a + (b - a) * i / per, a + (b - a) * (i + 1) / per) for i in range(per)]
+                for a, b in spans]
+        wholes = [[self._integral(k, a0, a1) for a0, a1 in row] for row in subs]
+        tol = QUAD_REL * sum(abs(w) for row in wholes for w in row)
         out = []
-        for a, b in spans:
+        for (a, _), row, row_wholes in zip(spans, subs, wholes):
             nodes = [(a, 0.0)]
-            for i in range(per):
-                a0, a1 = a + (b - a) * i / per, a + (b - a) * (i + 1) / per
-                self._refine(k, a0, a1, self._integral(k, a0, a1), nodes, 0)
+            for (a0, a1), whole in zip(row, row_wholes):
+                self._refine(k, a0, a1, whole, nodes, tol, 0)
             out.append(_Piece(k, nodes))
         return out
 
-    def _refine(self, k, a0, a1, whole, nodes, depth):
+    def _refine(self, k, a0, a1, whole, nodes, tol, depth):
         """Append the arc-length nodes of [a0, a1] (whole: its Gauss integral) to nodes,
-        halving it until the halves' integrals sum to whole within QUAD_REL. Inside a
-        knot span the speed is analytic, but OCCT's guides vary fast near clustered
-        knots (a degree-14 face whose spans shrink to 1e-3 of the fillet at one end):
-        a fixed rule misplaced a sample by 1e-7 there, and the data lost 3 digits."""
+        halving it until the halves' integrals sum to whole within tol (a length).
+        Inside a knot span the speed is analytic, but OCCT's guides vary fast near
+        clustered knots (a degree-14 face whose spans shrink to 1e-3 of the fillet at
+        one end): a fixed rule misplaced a sample by 1e-7 there, and the data lost 3
+        digits."""
         m = 0.5 * (a0 + a1)
         left, right = self._integral(k, a0, m), self._integral(k, m, a1)
-        if depth >= MAX_HALVINGS or abs(left + right - whole) <= QUAD_REL * abs(left + right):
+        if depth >= MAX_HALVINGS or abs(left + right - whole) <= tol:
             nodes.append((m, nodes[-1][1] + left))
             nodes.append((a1, nodes[-1][1] + right))
             return
-        self._refine(k, a0, m, left, nodes, depth + 1)
-        self._refine(k, m, a1, right, nodes, depth + 1)
+        self._refine(k, a0, m, left, nodes, tol, depth + 1)
+        self._refine(k, m, a1, right, nodes, tol, depth + 1)
 
     def _end(self, piece, at_end):
         """(c, t): the ball's centre and spine tangent at the start or end of a piece,
