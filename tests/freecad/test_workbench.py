@@ -813,12 +813,38 @@ def test_resonant_shape_parameters(boxdoc):
 
 
 def test_failed_sewing_is_reported(monkeypatch):
+    """Fault injection: the sewn faces lose the box's face opposite the fillet, so the
+    shell has free edges that touch no blend. The fillet fails, naming the edge."""
     box = shapes.box()
-    # fault injection: the faces the blend touches are lost when they are cut along its
-    # boundary, so the faces cannot be sewn into a closed shell
-    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, corners, tol: [])
+    sewn = fl._sewn
+    far = max(box.Faces, key=lambda f: f.distToShape(box.Edge1)[0]).CenterOfMass
+
+    def lose_far_face(faces):
+        lost = min(faces, key=lambda f: f.distToShape(Part.Vertex(far))[0])
+        return sewn([f for f in faces if f is not lost])
+
+    monkeypatch.setattr(fl, "_sewn", lose_far_face)
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: sewing the blend faces .* failed"):
         C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
+
+
+def test_a_blend_that_cannot_be_sewn_is_kept_as_occts(monkeypatch):
+    """Fault injection: the faces the blend touches are lost when they are cut along its
+    boundary, so the free edges the sewing leaves touch the blend. That fillet is kept
+    as OCCT made it (a valid solid, G1), and the report says why. A toNurbs() L
+    bracket's inner edge did this for real: its end faces' growth, fused by OCCT,
+    split the end section where it runs within 1e-7 of the faces (G2 contact)."""
+    box = shapes.box()
+    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, corners, tol: [])
+    solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    (kept,) = rep["kept_occt_faces"]
+    assert kept["where"] == "Box.Edge1"
+    assert re.match(r"sewing its blend to the faces it meets left \d+ free edge\(s\) "
+                    r"\(gaps wider than the sewing tolerance\), or the blend outside the "
+                    r"shell$", kept["reason"]), kept
+    assert solid.Volume == pytest.approx(box.makeFillet(2.0, [box.Edge1]).Volume, rel=1e-12)
 
 
 def test_untraceable_contact_keeps_occt_face(monkeypatch):

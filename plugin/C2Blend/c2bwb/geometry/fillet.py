@@ -600,7 +600,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
         fills = [_Fill(shells[0], p, loop, _at_corner(p, blended))
                  for p, loop in zip(patches, loops)]
     solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
-                    result, where)
+                    result, where, blended)
     if not bop:
         problems, line = bc.problems(solid, bop=False), UNCHECKED
     while bop:
@@ -620,7 +620,8 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
                         % (ex, ", at the %s, with every plate filling tried"
                            % ", ".join(f.patch.where() for f in redo) if redo else ""))
                 break
-            solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where)
+            solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where,
+                            blended)
     orig = _input_problems(shape) if problems else None
     inherited = _inherited(problems, orig, solid) if problems else None
     if inherited:
@@ -678,17 +679,30 @@ class _Fill:
         return True
 
 
-def _closed(shells, result, where):
+def _closed(shells, result, where, blended):
     """The solid bounded by the one closed shell of `shells`, facing outwards, with the
     tolerance of each edge not in `result` (OCCT's fillet) raised to its pcurves'
-    deviation. Raises C2BlendError for a sewing that left free edges."""
+    deviation. A sewing that left free edges raises Unassembled for the blends (of
+    `blended`) those edges touch, which are then kept as OCCT's, or C2BlendError when
+    they touch none."""
     if len(shells) != 1 or not shells[0].isClosed():
-        free = sum(1 for s in shells for e in s.Edges
-                   if len(s.ancestorsOfType(e, Part.Face)) == 1
-                   and not e.isSeam(s.ancestorsOfType(e, Part.Face)[0]))
+        free = [e for s in shells for e in s.Edges
+                if len(s.ancestorsOfType(e, Part.Face)) == 1
+                and not e.isSeam(s.ancestorsOfType(e, Part.Face)[0])]
+        sewn = Part.Compound(shells)
+
+        def unsewn(b):  # left out of every shell, or next to a free edge
+            tol = ON_FACE * b.fit["tolerance"]
+            return sewn.isNull() or sewn.distToShape(Part.Vertex(b.probe))[0] > tol or \
+                any(b.face.distToShape(e)[0] <= tol for e in free)
+        at = [b for b in blended if unsewn(b)]
+        if at:
+            raise Unassembled(at, "sewing its blend to the faces it meets left %d free "
+                              "edge(s) (gaps wider than the sewing tolerance), or the "
+                              "blend outside the shell" % len(free))
         raise C2BlendError("sewing the blend faces to the solid failed: %d shell(s), %d free "
                            "edge(s) left (gaps wider than the sewing tolerance)"
-                           % (len(shells), free), where, "sewing")
+                           % (len(shells), len(free)), where, "sewing")
     solid = Part.Solid(shells[0])
     if solid.Orientation == "Reversed" or solid.Volume < 0:
         # the sewn faces point inwards and Part.Solid only flagged the solid reversed
