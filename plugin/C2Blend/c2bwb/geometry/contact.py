@@ -38,7 +38,8 @@ NEWTON_DONE = 1e-10  # relative step after which one more Newton step is below r
 SUB_PER_SPAN = 2  # Gauss subintervals per knot span of the guide along the fillet
 MIN_SUB = 4  # ... and at least this many per section (each is halved at least once)
 QUAD_REL = 1e-12  # a subinterval is halved until its halves' integrals sum to its own
-MAX_HALVINGS = 12  # ... to this fraction of the section's length, at most this many times
+# within this fraction of the section's arc length (_refine) ...
+MAX_HALVINGS = 12  # ... at most this many times
 WARM = 0.05  # start Newton from the last solution within this fraction of the section
 
 # 5-point Gauss-Legendre nodes and weights on [0, 1]
