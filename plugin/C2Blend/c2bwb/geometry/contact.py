@@ -98,19 +98,22 @@ class Contact:
     pairs(n) gives n samples uniform in the spine's arc length, as
     trimlines.pair_rows takes them. extend: (start, end), lengths (model units, along
     the guide's mid-line) by which an open chain is traced past its ends, on the
-    faces' underlying surfaces (ends.py trims the blend back). Raises ContactError
-    where it cannot."""
+    faces' underlying surfaces (ends.py trims the blend back). arc_length: False for a
+    caller that only solves at guide parameters it chooses (solve()): the spine's arc
+    length (pieces, length, starts), which pairs() and at_length() need, is then not
+    integrated. Raises ContactError where it cannot."""
 
-    def __init__(self, chain, radius, extend=(0.0, 0.0)):
+    def __init__(self, chain, radius, extend=(0.0, 0.0), arc_length=True):
         self.chain, self.radius = chain, radius
         self.f1, self.f2 = chain.sides
         self.sections = _extended(chain.sections, extend)
         self.signs = None
         self.solved = [([], []) for _ in self.sections]  # per section: sorted a, solutions
         self.cache = {}  # arc length -> contact, shared by pairs(n) and pairs(2n)
-        self.pieces = [p for k in range(len(self.sections)) for p in self._pieces(k)]
-        self.length = self._join(self.pieces, chain.closed)
-        self.starts = [p.start for p in self.pieces]
+        if arc_length:
+            self.pieces = [p for k in range(len(self.sections)) for p in self._pieces(k)]
+            self.length = self._join(self.pieces, chain.closed)
+            self.starts = [p.start for p in self.pieces]
 
     def _guess(self, sec, a):
         q1, q2 = sec.rbf.point(a, sec.c1), sec.rbf.point(a, sec.c2)

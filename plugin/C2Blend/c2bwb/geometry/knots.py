@@ -164,7 +164,7 @@ def _crossing(run, at_end, side, edge, radius):
     the exact contact on side `side` crosses edge (the edge's curve, extended), or None.
     The offset of the contact from that curve along the spine changes sign there."""
     sec = run.sections[-1 if at_end else 0]
-    contact = Contact(Run([sec], (True, True), ends=[], corners=[]), radius)
+    contact = Contact(Run([sec], (True, True), ends=[], corners=[]), radius, arc_length=False)
     curve = edge.Curve
 
     def offset(a):
