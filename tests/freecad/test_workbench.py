@@ -18,7 +18,7 @@ import pytest
 import C2Blend
 import shapes
 from c2bwb.errors import C2BlendError
-from c2bwb.geometry import fillet as fl, trimlines, check as ck
+from c2bwb.geometry import fillet as fl, trimlines, check as ck, rollingball as rb
 from c2bwb.objects import animate, make
 
 V = FreeCAD.Vector
@@ -488,7 +488,10 @@ def test_concave_edge_ending_on_a_slanted_face(axis):
     (it was kept as OCCT's G1 face before). Closed forms (a = x - 5, b = z - 5, the
     corner region's area A and first moment M = int a dA = int b dA by symmetry, both
     by _quintic_integral): the volume grows by 30 A - tan 20 (5 A + M), the slanted face
-    by A / cos 20."""
+    by A / cos 20. FreeCAD's Volume and Area integrate with a fixed rule, whose error
+    here depends on how the face's wire is built (the grown face's Area is 7e-7 over
+    the closed form, the same boundary as a fuse of face and region 1e-7 under it); the
+    face's area is therefore measured by _planar_area, and the volume to 1e-5."""
     s, inner = shapes.slanted_l_bracket(axis)
     solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
     assert_valid(solid)
@@ -497,13 +500,37 @@ def test_concave_edge_ending_on_a_slanted_face(axis):
     a = _quintic_integral(lambda q: q, 2.0)
     m = _quintic_integral(lambda q: 0.5 * q * q, 2.0)
     tan = math.tan(math.radians(20.0))
-    assert abs(solid.Volume - (s.Volume + 30.0 * a - tan * (5.0 * a + m))) < 1e-6
+    assert abs(solid.Volume - (s.Volume + 30.0 * a - tan * (5.0 * a + m))) < 1e-5
     slanted = [f for f in solid.Faces if f.Surface.isPlanar()
                and 0.1 < abs(f.Surface.Axis.y) < 0.99999]
     slanted0 = [f for f in s.Faces if f.Surface.isPlanar()
                 and 0.1 < abs(f.Surface.Axis.y) < 0.99999]
     assert len(slanted) == 1 and len(slanted0) == 1
-    assert abs(slanted[0].Area - (slanted0[0].Area + a / math.cos(math.radians(20.0)))) < 1e-6
+    assert abs(_planar_area(slanted[0]) - (_planar_area(slanted0[0])
+                                           + a / math.cos(math.radians(20.0)))) < 1e-8
+
+
+def _planar_area(face):
+    """Area of a planar face by Green's theorem on its edges' 3D curves: 1/2 the sum of
+    n . (p x p') dt over each edge (reversed edges negatively), by 20-point
+    Gauss-Legendre on 8 subintervals of each knot span."""
+    import numpy as np
+    xs, ws = np.polynomial.legendre.leggauss(20)
+    n = face.Surface.Axis
+    total = 0.0
+    for e in face.Edges:
+        lo, hi = e.ParameterRange
+        knots = [k for k in getattr(e.Curve, "getKnots", lambda: [])() if lo < k < hi]
+        breaks = [lo] + knots + [hi]
+        sign = -1.0 if e.Orientation == "Reversed" else 1.0
+        for a, b in zip(breaks, breaks[1:]):
+            for j in range(8):
+                a1, b1 = a + (b - a) * j / 8, a + (b - a) * (j + 1) / 8
+                for x, w in zip(xs, ws):
+                    t = 0.5 * (a1 + b1) + 0.5 * (b1 - a1) * x
+                    total += sign * 0.25 * w * (b1 - a1) * n.dot(
+                        e.valueAt(t).cross(e.derivative1At(t)))
+    return abs(total)
 
 
 def test_concave_edge_ending_on_a_cylinder():
@@ -1109,6 +1136,35 @@ def test_runs_end_where_the_contact_crosses_the_face_change():
             for j in range(7):
                 p = f.valueAt(u0 + (u1 - u0) * i / 6, v0 + (v1 - v0) * j / 6)
                 assert plain.distToShape(Part.Vertex(p))[0] < 1e-6, p
+
+
+@pytest.mark.parametrize("part", ["bracket", "wall"])
+def test_concave_edge_ending_on_bspline_faces(part):
+    """The L bracket's inner edge, and the wall running into a cylinder, converted by
+    toNurbs() (every face a B-spline, as imported parts may arrive). The blend's end
+    sections lie outside the end faces (a plane, the cylinder), which grow by the
+    corner regions. A Boolean fuse of face and region split the section near the
+    trimline (a G2 section leaves the plane as d^3, within 1e-7 of the region's leg),
+    sewing left free edges, and OCCT's face was kept; now the face's wire is rebuilt to
+    end at the section. The blend and the grown end faces are those of the same part
+    with analytic faces (whose volumes other tests check against closed forms): a 7 x 7
+    grid on each of the result's faces lies on that part's C2 fillet (to 1e-6)."""
+    if part == "wall":
+        s, inner = shapes.wall_into_cylinder()
+    else:
+        s, _, inner = shapes.l_bracket()
+    ns, edges = shapes.as_nurbs(s, [inner])
+    solid, rep = C2Blend.fillet_report(ns, edges, 2.0, label="Part")
+    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check" or \
+        "as in the input solid" in rep["solid_check"]
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    plain, _ = C2Blend.fillet_report(s, [inner], 2.0, label="Part")
+    assert len(solid.Faces) == len(plain.Faces)
+    for f in solid.Faces:
+        for p in rb.interior_points(f, 7):
+            assert plain.distToShape(Part.Vertex(p))[0] < 1e-6, p
 
 
 def test_a_preview_skips_the_bop_check(monkeypatch):

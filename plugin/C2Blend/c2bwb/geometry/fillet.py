@@ -409,6 +409,64 @@ def _growth(face, edge, tol):
     return region, corner.Point, legs
 
 
+def _end_at(edge, corner, p, tol):
+    """The edge along edge's curve from its end away from point `corner` to point p,
+    which lies on that curve (within tol) before or beyond the corner, or None when
+    p is off the curve or corner is not an end of edge."""
+    c = edge.Curve
+    s = c.parameter(p)
+    if (c.value(s) - p).Length > tol:
+        return None
+    a, b = edge.FirstParameter, edge.LastParameter
+    at_a, at_b = [(edge.valueAt(x) - corner).Length <= tol for x in (a, b)]
+    if at_a == at_b:
+        return None
+    near, far = (a, b) if at_a else (b, a)
+    if c.isPeriodic():  # the parameter of p nearest the corner's
+        s += round((near - s) / c.period()) * c.period()
+    return Part.Edge(c, min(s, far), max(s, far))
+
+
+def _grown(face, section, corner, region, tol):
+    """face (a piece of an original face that keeps the vertex `corner`) grown by
+    `region` (_growth): its two edges at the corner end instead at the ends of
+    `section` (shortened or extended along their curves), and section joins them; its
+    other wires are kept. Rebuilding the wire keeps the section's edge whole, where a
+    Boolean fuse of face and region may split it near its ends (a G2 section leaves a
+    plane as d^3, so it runs within 1e-7 of a leg there). Raises ValueError when the
+    corner or a section end is not where it should be."""
+    face = face.copy()  # the fix below may shift the curves of its edges on its surface
+    # by a period, in face too (the edges it keeps are face's): not in its neighbours
+    area = face.Area
+    ends = [v.Point for v in section.Vertexes]
+    swap = []
+    for w in face.Wires:
+        at = [e for e in w.Edges
+              if any((v.Point - corner).Length <= tol for v in e.Vertexes)]
+        if not at:
+            continue
+        moved = [next((g for g in (_end_at(e, corner, p, tol) for e in at) if g), None)
+                 for p in ends]
+        if len(at) != 2 or None in moved:
+            raise ValueError("the end section's ends are not on the curves of the "
+                             "face's two edges at its corner (%.6g, %.6g, %.6g)"
+                             % tuple(corner))
+        rest = [e for e in w.Edges if not any(e.isSame(x) for x in at)]
+        swap.append((w, Part.Wire(Part.__sortEdges__(rest + moved + [section]))))
+    if not swap:
+        raise ValueError("the face has no vertex at the corner (%.6g, %.6g, %.6g)"
+                         % tuple(corner))
+    # the face itself with the wire replaced: the kept edges keep their curves on its
+    # surface, which a new face on a copy of the surface would lack. The fix adds the
+    # new edges' curves on the surface.
+    out = face.replaceShape(swap)
+    out.validate()
+    if abs(out.Area - area - region.Area) > 1e-6 * (area + region.Area):
+        raise ValueError("the grown face's area %.9g is not the face's %.9g plus the "
+                         "region's %.9g" % (out.Area, area, region.Area))
+    return out
+
+
 def _edge_points(edge, fractions=(0.25, 0.5, 0.75)):
     """Points of edge at these fractions of its parameter range (by default its inner
     points: a quarter, half and three quarters)."""
@@ -460,19 +518,30 @@ def _cut_face(face, tools, sharp, corners, tol):
     return [f for f in pieces if not any(touches(f, e) for e in sharp)]
 
 
-def _spans(curve):
-    """Knot spans of a B-spline curve (1 for other curves)."""
-    return max(getattr(curve, "NbKnots", 2) - 1, 1)
+def _samples(a, b, curves, per_span=8, n=100):
+    """Parameters in [a, b] at which to compare an edge's curves: n + 1 evenly spaced,
+    and per_span + 1 in each knot span of each of `curves` (the B-splines among them)
+    that meets [a, b]. A pcurve's knots may cluster at one end of the edge, and its
+    distance from the 3D curve peaks inside such short spans."""
+    ts = {a + (b - a) * j / n for j in range(n + 1)}
+    for c in curves:
+        knots = c.getKnots() if hasattr(c, "getKnots") else []
+        for lo, hi in zip(knots, knots[1:]):
+            lo, hi = max(lo, a), min(hi, b)
+            if hi > lo:
+                ts.update(lo + (hi - lo) * j / per_span for j in range(per_span + 1))
+    return sorted(ts)
 
 
 def _update_tolerances(edges):
     """Raise the tolerance of each of `edges` to twice the largest distance between
     its 3D curve and its curves on the faces (what the BOP check measures, by
     optimisation), where the new pcurves made by cutting and sewing are further off
-    than half the edge's tolerance. Sampled at 100 points, and at least 8 per knot span
-    of either curve: the distance peaks between the 129 nodes of a mitre's cut curve,
-    which 101 samples missed (1.15e-7 against 4e-8 found, on a box's four top edges at
-    R = 4)."""
+    than half the edge's tolerance. Sampled at 100 points, and at 8 per knot span of
+    either curve (_samples): the distance peaks between the 129 nodes of a mitre's cut
+    curve, which 101 samples missed (1.15e-7 against 4e-8 found, on a box's four top
+    edges at R = 4), and inside the short spans where a toNurbs() pcurve's knots
+    cluster (3.9e-7 against 9.6e-8 found, on a wall running into a cylinder)."""
     for e in edges:
         if e.Degenerated:  # a pole: no 3D curve to compare with
             continue
@@ -482,9 +551,7 @@ def _update_tolerances(edges):
                 c2, surf, place, a, b = e.curveOnSurface(k)
             except (TypeError, ValueError, RuntimeError, IndexError):
                 break
-            n = max(100, 8 * _spans(c2), 8 * _spans(e.Curve))
-            for j in range(n + 1):
-                t = a + (b - a) * j / n
+            for t in _samples(a, b, (c2, e.Curve)):
                 uv = c2.value(t)
                 q = surf.value(uv.x, uv.y)
                 q = place.multVec(q) if place else q
@@ -496,9 +563,10 @@ def _update_tolerances(edges):
 class _Touched:
     """A face of the original solid that blends touch: orig; tools: the edges lying on
     its surface that bound it anew (blend edges, kept OCCT fillets' edges, legs of
-    neighbours' growth regions); inside: those lying on the face itself; grown: the
-    regions it grows by (_growth); corners: vertices the fillets end at, which it
-    keeps; owners: the blends concerned."""
+    neighbours' growth regions); inside: those lying on the face itself; grown: an
+    (end section, corner, region) for each region it grows by (_growth, _grown);
+    corners: vertices the fillets end at, which it keeps; owners: the blends
+    concerned."""
 
     def __init__(self, orig):
         self.orig, self.tools, self.inside, self.grown, self.corners = orig, [], [], [], []
@@ -554,7 +622,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
                 raise Unassembled(t.owners, "an end of its blend leaves face %s of the "
                                   "original solid away from the face's corners"
                                   % ck.element_name(shape, t.orig, "Face"))
-            t.grown.append(g[0])
+            t.grown.append((e, g[1], g[0]))
             t.corners.append(g[1])
             for leg in g[2]:  # a leg beyond the face's edges cuts the face it crosses
                 if any(_edge_on_face(leg, x, tol) for x in t.orig.Edges):
@@ -575,8 +643,14 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
     for t in touched:
         try:
             pieces = _cut_face(t.orig, t.inside, sharp, t.corners, tol)
-            if t.grown:  # the fillets' end sections extend the face: one face again
-                pieces = pieces[0].multiFuse(pieces[1:] + t.grown).removeSplitter().Faces
+            for section, corner, region in t.grown:  # the fillets' end sections
+                # extend the face: at each corner, the piece keeping it grows
+                k = next((i for i, f in enumerate(pieces) if any(
+                    (v.Point - corner).Length <= tol for v in f.Vertexes)), None)
+                if k is None:
+                    raise ValueError("no piece keeps the corner (%.6g, %.6g, %.6g)"
+                                     % tuple(corner))
+                pieces[k] = _grown(pieces[k], section, corner, region, tol)
         except Exception as ex:
             raise Unassembled(t.owners, "face %s of the original solid cannot be cut along "
                               "its blend (%s)" % (ck.element_name(shape, t.orig, "Face"),
