@@ -859,8 +859,8 @@ def test_a_blend_that_cannot_be_sewn_is_kept_as_occts(monkeypatch):
     """Fault injection: the faces the blend touches are lost when they are cut along its
     boundary, so the free edges the sewing leaves touch the blend. That fillet is kept
     as OCCT made it (a valid solid, G1), and the report says why. A toNurbs() L
-    bracket's inner edge did this for real: its end faces' growth, fused by OCCT,
-    split the end section where it runs within 1e-7 of the faces (G2 contact)."""
+    bracket's inner edge did this for real while end faces grew by a Boolean fuse,
+    which split the end section where it runs within 1e-7 of the faces (G2 contact)."""
     box = shapes.box()
     monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, corners, tol: [])
     solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")

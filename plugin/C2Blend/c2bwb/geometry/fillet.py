@@ -433,8 +433,9 @@ def _grown(face, section, corner, region, tol):
     `section` (shortened or extended along their curves), and section joins them; its
     other wires are kept. Rebuilding the wire keeps the section's edge whole, where a
     Boolean fuse of face and region may split it near its ends (a G2 section leaves a
-    plane as d^3, so it runs within 1e-7 of a leg there). Raises ValueError when the
-    corner or a section end is not where it should be."""
+    plane as d^3, so it runs within 1e-7 of a leg there). Raises ValueError when a
+    section end is not on the curves of the corner's edges, or the grown face's area
+    is not the face's plus the region's."""
     face = face.copy()  # the fix below may shift the curves of its edges on its surface
     # by a period, in face too (the edges it keeps are face's): not in its neighbours
     area = face.Area
@@ -453,9 +454,6 @@ def _grown(face, section, corner, region, tol):
                              % tuple(corner))
         rest = [e for e in w.Edges if not any(e.isSame(x) for x in at)]
         swap.append((w, Part.Wire(Part.__sortEdges__(rest + moved + [section]))))
-    if not swap:
-        raise ValueError("the face has no vertex at the corner (%.6g, %.6g, %.6g)"
-                         % tuple(corner))
     # the face itself with the wire replaced: the kept edges keep their curves on its
     # surface, which a new face on a copy of the surface would lack. The fix adds the
     # new edges' curves on the surface.
