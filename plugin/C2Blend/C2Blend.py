@@ -9,7 +9,8 @@
     report = C2Blend.check(shape, ["Edge3"])                        # dict
 
 Every function leaves its inputs unchanged and raises C2Blend.Error, whose message
-names the object and edge, when the operation cannot be done. Reports state, for every
+names the object (the `label` or `labels` given, "Shape" by default) and the edge, when
+the operation cannot be done. Reports state, for every
 trimline, the worst position gap (g0), normal angle (g1, rad) and cross-direction
 normal-curvature jump (g2, absolute and relative) over 101 samples, and a verdict.
 """
@@ -29,25 +30,29 @@ def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 
     edges: Part.Edge objects of shape, names ('Edge3') or 1-based indices.
     radius: rolling-ball radius (model units) fixing the trimlines.
     continuity: 'C1', 'C2' (G2 contact, default) or 'C3'.
-    shape_params: (gamma, eta, lambda, rho); tension scales the cross derivatives.
+    shape_params: (gamma, eta, lambda, rho) for C2, (b, c, d) for C1, (a0..a4) for C3;
+    tension scales the cross derivatives. label: the shape's name in error messages.
     """
     return _fillet.fillet(shape, edges, float(radius), continuity,
                           tuple(float(p) for p in shape_params), float(tension), label)
 
 
-def fillet(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0):
+def fillet(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0,
+           label="Shape"):
     """Fillet edges of shape; returns the filleted Part.Solid (see fillet_report)."""
-    return fillet_report(shape, edges, radius, continuity, shape_params, tension)[0]
+    return fillet_report(shape, edges, radius, continuity, shape_params, tension, label)[0]
 
 
 def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1),
-          tension=1.0, report=False):
+          tension=1.0, report=False, labels=("Face1", "Face2")):
     """G2 blend face from edge1 of face1 to edge2 of face2 (possibly different solids).
 
-    Returns a Part.Face, or (Part.Face, report dict) with report=True.
+    Returns a Part.Face, or (Part.Face, report dict) with report=True. labels: the two
+    sides' names in error messages and the report, e.g. ("Cylinder.Face1", "Tube.Face3").
     """
     face, rep = _blendfaces.blend(face1, edge1, face2, edge2, continuity,
-                                  tuple(float(p) for p in shape_params), float(tension))
+                                  tuple(float(p) for p in shape_params), float(tension),
+                                  names=tuple(labels))
     return (face, rep) if report else face
 
 
@@ -56,9 +61,10 @@ def blend_solid(faces, where="blend"):
     return _blendfaces.close_solid(faces, where)
 
 
-def check(shape, edges, samples=101):
-    """Continuity report (G0/G1/G2) across edges of shape, e.g. of OCCT's own fillets."""
-    return _check.check(shape, edges, samples)
+def check(shape, edges, samples=101, label="Shape"):
+    """Continuity report (G0/G1/G2) across edges of shape, e.g. of OCCT's own fillets.
+    edges: Part.Edge objects, names ('Edge3') or 1-based indices, each between two faces."""
+    return _check.check(shape, edges, samples, label)
 
 
 def format_report(report):

@@ -9,13 +9,16 @@ import pytest
 
 import shapes
 from c2bwb.errors import C2BlendError
+from c2bwb.geometry import fillet as fl
 from c2bwb.objects import make
 
 
-@pytest.fixture
-def doc():
+@pytest.fixture(params=[0, 1], ids=["undo_off", "undo_on"])
+def doc(request):
+    """Documents made by scripts and freecadcmd have UndoMode 0, where aborting a
+    transaction undoes nothing; the GUI's have 1."""
     d = FreeCAD.newDocument("Robust")
-    d.UndoMode = 1
+    d.UndoMode = request.param
     box = d.addObject("Part::Box", "Box")
     box.Length = box.Width = box.Height = 10
     s, _ = shapes.shaft_on_plate()
@@ -98,7 +101,61 @@ def test_bad_blend_leaves_document_unchanged(doc, side1, side2, fragment):
     assert shapes.document_state(doc) == before
 
 
+BAD_CHECKS = [
+    ("Box", ["Face2"], r"Box\.Face2: Face2 is not an edge; select edges to check"),
+    ("Box", ["Edge99"], r"Box\.Edge99: no such edge \(the shape has 12 edges\)"),
+    ("Box", [], r"Box: no edges given"),
+    ("Sheet", ["Edge1"], r"Sheet\.Edge1: the edge has 1 adjacent face; continuity is "
+     r"measured between two faces$"),
+    ("ShaftPlate", [lambda s: next(
+        "Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+        if any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))],
+     r"ShaftPlate\.Edge\d+: the edge has 1 adjacent face; continuity is measured between two "
+     r"faces \(it is the seam where that closed face joins itself\)"),
+]
+
+
+@pytest.mark.parametrize("name,edges,fragment", BAD_CHECKS)
+def test_bad_check_names_the_edge_and_leaves_document_unchanged(doc, name, edges, fragment):
+    """Check continuity, from a script and as a document object, on edges it cannot
+    check: the message names the object and the edge."""
+    import C2Blend
+    obj = doc.getObject(name)
+    edges = [e(obj.Shape) if callable(e) else e for e in edges]
+    with pytest.raises(C2Blend.Error, match=fragment):
+        C2Blend.check(obj.Shape, edges, label=name)
+    before = shapes.document_state(doc)
+    with pytest.raises(C2BlendError, match=fragment):
+        make.make_check(obj, edges)
+    assert shapes.document_state(doc) == before
+
+
+@pytest.mark.parametrize("continuity,given,same", [
+    ("C1", (0.1, 1.5, 0.5), (0.1, 1.5, 0.5)),
+    ("C3", (0.1, 2.0, 2.0, 2.0, 2.0), (0.05, 1.0, 1.0, 1.0, 1.0))])
+def test_document_object_with_c1_and_c3_shape_parameters(doc, continuity, given, same):
+    """make_fillet takes C1's three and C3's five shape parameters. The object stores
+    C3's divided by a4: the PDE is homogeneous in them, so (0.1, 2, 2, 2, 2) and
+    (0.05, 1, 1, 1, 1) are the same blend. The object's shape must equal the scripting
+    API's fillet with the second set, and differ from the default parameters' (on the
+    shaft's circular junction: on a straight edge the data do not vary along it, and no
+    shape parameter changes the blend)."""
+    base, edge = doc.getObject("ShaftPlate"), shapes.shaft_on_plate()[1]
+    obj = make.make_fillet(base, [edge], 2.0, continuity, given)
+    ref = fl.fillet(base.Shape, [edge], 2.0, continuity, same)[0]
+    default = fl.fillet(base.Shape, [edge], 2.0, continuity)[0]
+    assert obj.Verdict == ("G1" if continuity == "C1" else "G2")
+    assert abs(obj.Shape.Volume - ref.Volume) < 1e-9 * ref.Volume
+    # relative volume changes: 8.0e-5 (C1) and 3.2e-6 (C3)
+    assert abs(obj.Shape.Volume - default.Volume) > 1e-6 * ref.Volume
+    with pytest.raises(C2BlendError, match=r"ShaftPlate: shape_params: .*divided by a4, which "
+                       r"must not be 0"):
+        make.make_fillet(base, [edge], 2.0, "C3", (1, 1, 1, 1, 0))
+
+
 def test_failed_recompute_keeps_shape_and_undo_redo(doc):
+    if doc.UndoMode == 0:
+        pytest.skip("undo and redo need UndoMode 1")
     box = doc.getObject("Box")
     f = make.make_fillet(box, ["Edge1"], 2.0)
     good = shapes.document_state(doc)

@@ -733,8 +733,8 @@ def test_face_instead_of_edge(boxdoc):
     before = shapes.document_state(doc)
     with pytest.raises(C2BlendError, match=r"Box\.Face1: Face1 is not an edge"):
         make.make_fillet(box, ["Face1"], 2.0)
-    with pytest.raises(C2BlendError, match="a Face was given where an edge is needed"):
-        C2Blend.fillet(box.Shape, [box.Shape.Faces[0]], 2.0)
+    with pytest.raises(C2BlendError, match="^Box: a Face was given where an edge is needed"):
+        C2Blend.fillet(box.Shape, [box.Shape.Faces[0]], 2.0, label="Box")
     assert shapes.document_state(doc) == before
 
 
@@ -1256,7 +1256,8 @@ def test_a_returned_occt_solid_is_checked_as_our_own():
 
 
 def test_animation_driven_by_a_spreadsheet(tmp_path):
-    """The time may also be a spreadsheet cell bound by expressions."""
+    """The time may also be a spreadsheet cell bound by expressions. Checks (C2Check,
+    which have no shape) animate with the blends."""
     doc = FreeCAD.newDocument("AnimSheet")
     sheet = doc.addObject("Spreadsheet::Sheet", "Params")
     sheet.set("A1", "0")
@@ -1270,9 +1271,14 @@ def test_animation_driven_by_a_spreadsheet(tmp_path):
     doc.recompute()
     blend = make.make_blend((a, ["Face1", "Edge%d" % (shapes.circle_edge(a.Shape, 2) + 1)]),
                             (b, ["Face1", "Edge%d" % (shapes.circle_edge(b.Shape, 3) + 1)]))
-    frames = animate.animate(doc, sheet, [0.0, 0.5, 1.0], [blend], str(tmp_path), "brep",
-                             prop="time")
+    # a check of the moving cylinder's top rim (a sharp edge: G0) animates too
+    check = make.make_check(a, ["Edge%d" % (shapes.circle_edge(a.Shape, 2) + 1)])
+    assert animate.clock_property(sheet) == "time"  # what the Animate command passes
+    assert animate.clock_property(a) is None and animate.clock_property(blend) is None
+    frames = animate.animate(doc, sheet, [0.0, 0.5, 1.0], [blend, check], str(tmp_path),
+                             "brep", prop=animate.clock_property(sheet))
     assert [f["verdicts"]["C2Blend"] for f in frames] == ["G2"] * 3
+    assert [f["verdicts"]["C2Check"] for f in frames] == ["G0"] * 3
     # the blend starts on the moving cylinder: its widest point is that radius
     widths = [Part.read(f["files"][0]).optimalBoundingBox().XMax for f in frames]
     assert widths == pytest.approx([1.0, 1.15, 1.3], abs=1e-6)
@@ -1823,3 +1829,22 @@ def test_boss_on_a_seam_is_kept():
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
     assert_valid(solid)
     assert_g2(rep)
+
+
+def test_tessellation_takes_the_nodes_parameters():
+    """The curvature map and the CGAL mesh evaluate each tessellation point at its (u, v).
+    They must be the triangulation's own node parameters (getUVNodes), not OCCT's
+    projection, which took 20 s for the 2960 points of the shaft's blend face; and each
+    must give the point itself, within 1e-9 of the face's size."""
+    from c2bwb.geometry.surface import tessellation
+    s, edge = shapes.shaft_on_plate()
+    solid = fl.fillet(s, [edge], 2.0)[0]
+    kinds = set()
+    for face in solid.Faces:
+        pts, tris, uvs = tessellation(face, 1e-3 * solid.BoundBox.DiagonalLength)
+        nodes = set(face.getUVNodes())
+        assert len(uvs) == len(pts) and all(uv in nodes for uv in uvs)
+        tol = 1e-9 * face.BoundBox.DiagonalLength
+        assert max((face.Surface.value(*uv) - p).Length for p, uv in zip(pts, uvs)) < tol
+        kinds.add(type(face.Surface).__name__)
+    assert {"BSplineSurface", "Cylinder", "Plane"} <= kinds

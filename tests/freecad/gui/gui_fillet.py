@@ -111,6 +111,22 @@ try:
     edit = FilletPanel(obj=fillet)
     edit.timer.stop()
     result["edit_parameters"] = edit.parameters()
+    # the slider moves the value in its box; a value typed in the box is kept exactly
+    # (the tension slider cannot show 1.0) and moves the slider; the box takes negative
+    # shape parameters, which the log-scale slider cannot
+    edit.sliders["Tension"].setValue(500)
+    result["slid_tension"] = edit.spins["Tension"].value()
+    edit.spins["Tension"].setValue(1.0)
+    edit.spins["Rho"].setValue(-0.5)
+    result["typed"] = [edit.parameters()[3], edit.sliders["Tension"].value(),
+                       edit.parameters()[2][3], edit.sliders["Rho"].value()]
+    # C1 through the panel: its (b, c, d) are Gamma, Eta, Lambda
+    edit.spins["Rho"].setValue(1.0)
+    edit.cont.setCurrentIndex(1)
+    result["c1_parameters"] = edit.fillet_parameters()
+    edit.timer.stop()
+    result["c1_accepted"] = edit.accept()
+    result["c1_object"] = [fillet.Continuity, fillet.Verdict, "Invalid" in fillet.State]
     # all 12 edges of a box through the command and its panel, left at its defaults:
     # 12 blends and 8 plate-filled corners (this froze FreeCAD in OCCT's BOP check at
     # tension 1.0008, where the panel's tension slider rounded 1.0)

@@ -153,17 +153,21 @@ class Animate(_Command):
     """Animate: step the Time of a C2Clock and check the selected blends per frame."""
 
     ICON, MENU = "C2Blend_Animate.svg", "Animate"
-    TIP = ("Select a Clock and C2Blend objects; steps Time 0..1 in 10 frames, checks "
-           "continuity and saves PNG frames")
+    TIP = ("Select a Clock (or a spreadsheet with a cell named Time, time or t) and C2Blend "
+           "objects; steps the time 0..1 in 10 frames, checks continuity and saves PNG "
+           "frames")
 
     def Activated(self):
         objs = [s.Object for s in FreeCADGui.Selection.getSelectionEx()]
-        clocks = [o for o in objs if hasattr(o, "Time")]
-        targets = [o for o in objs if hasattr(o, "Report") and not hasattr(o, "Time")]
+        clocks = [o for o in objs if animate.clock_property(o)]
+        targets = [o for o in objs if "Report" in o.PropertiesList and o not in clocks]
         try:
             if len(clocks) != 1 or not targets:
-                raise C2BlendError("select one Clock (an object with a Time property) and "
-                                   "the C2Blend objects to check")
+                raise C2BlendError("select one clock (a Clock, or a spreadsheet with a cell "
+                                   "named %s) and the C2Blend objects to check (selected: %s)"
+                                   % (", ".join(animate.TIME_ALIASES[:-1]) + " or "
+                                      + animate.TIME_ALIASES[-1],
+                                      ", ".join(o.Label for o in objs) or "nothing"))
             out = QtGui.QFileDialog.getExistingDirectory(None, "Folder for PNG frames")
             if not out:
                 return
@@ -171,6 +175,7 @@ class Animate(_Command):
             view = FreeCADGui.ActiveDocument.ActiveView
             frames = animate.animate(FreeCAD.ActiveDocument, clocks[0],
                                      [k / 9.0 for k in range(10)], targets, out, "brep",
+                                     animate.clock_property(clocks[0]),
                                      snapshot=lambda p: animate.save_view_png(view, p))
             for f in frames:
                 FreeCAD.Console.PrintMessage("t = %.3f: %s\n" % (f["t"], f["verdicts"]))

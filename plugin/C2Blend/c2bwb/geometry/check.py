@@ -16,6 +16,7 @@ import math
 
 import Part
 
+from ..errors import C2BlendError
 from .surface import Frame, frame_at_point, angle
 
 TOL_G0 = 1e-6     # model units, and at least the edge tolerance
@@ -29,6 +30,38 @@ def edge_faces(shape, edge):
     for f in shape.ancestorsOfType(edge, Part.Face):
         if not any(f.isSame(g) for g in out):
             out.append(f)
+    return out
+
+
+def named_edges(shape, edges, label, purpose):
+    """[(name, Part.Edge)] from Part.Edge objects, 'EdgeN' names or 1-based indices of
+    edges of shape (`label` in messages; purpose: what the edges are for, e.g. 'fillet').
+    Raises C2BlendError naming the offending element."""
+    out = []
+    for e in edges:
+        if isinstance(e, int):
+            e = "Edge%d" % e
+        if isinstance(e, str):
+            if not e.startswith("Edge"):
+                raise C2BlendError("%s is not an edge; select edges to %s" % (e, purpose),
+                                   "%s.%s" % (label, e))
+            try:
+                edge = shape.getElement(e)
+            except Exception:
+                raise C2BlendError("no such edge (the shape has %d edges)" % len(shape.Edges),
+                                   "%s.%s" % (label, e)) from None
+            out.append((e, edge))
+            continue
+        if not isinstance(e, Part.Shape) or e.ShapeType != "Edge":
+            kind = getattr(e, "ShapeType", type(e).__name__)
+            raise C2BlendError("a %s was given where an edge is needed; select edges to %s"
+                               % (kind, purpose), label)
+        name = element_name(shape, e, "Edge")
+        if name == "?":
+            raise C2BlendError("the edge does not belong to the shape", label)
+        out.append((name, e))
+    if not out:
+        raise C2BlendError("no edges given", label)
     return out
 
 
@@ -122,19 +155,29 @@ def element_name(shape, sub, kind):
 RANK = {"none": 0, "G0": 1, "G1": 2, "G2": 3}
 
 
-def check(shape, edges, samples=101):
+def check(shape, edges, samples=101, label="Shape"):
     """Continuity report for the given edges of shape.
 
-    edges: Part.Edge objects or names like 'Edge3'. Returns
+    edges: Part.Edge objects, names like 'Edge3' or 1-based indices. Returns
     {"edges": [{"edge": "Edge3", "faces": ["Face1", "Face2"], ...per-edge dict...}],
-     "verdict": worst verdict}.
+     "verdict": worst verdict}. Raises C2BlendError naming `label` and the edge when an
+    edge is not one of shape's or does not lie between two faces.
     """
+    named = named_edges(shape, edges, label, "check")
+    for name, edge in named:
+        faces = edge_faces(shape, edge)
+        if len(faces) != 2:
+            raise C2BlendError("the edge has %d adjacent face%s; continuity is measured "
+                               "between two faces%s"
+                               % (len(faces), "" if len(faces) == 1 else "s",
+                                  " (it is the seam where that closed face joins itself)"
+                                  if len(faces) == 1 and edge.isSeam(faces[0]) else ""),
+                               "%s.%s" % (label, name))
     out = []
     diag = shape.BoundBox.DiagonalLength
-    for e in edges:
-        edge = shape.getElement(e) if isinstance(e, str) else e
+    for name, edge in named:
         rep = check_edge(shape, edge, samples, diag)
-        rep["edge"] = element_name(shape, edge, "Edge")
+        rep["edge"] = name
         rep["faces"] = [element_name(shape, f, "Face") for f in edge_faces(shape, edge)]
         out.append(rep)
     verdict = min((r["verdict"] for r in out), key=RANK.get) if out else "none"

@@ -72,33 +72,10 @@ class Unassembled(Exception):
 
 
 def resolve_edges(shape, edges, label):
-    """[(name, Part.Edge)] from Part.Edge objects, 'EdgeN' names or 1-based indices.
-    Raises C2BlendError naming the offending element."""
-    out = []
-    for e in edges:
-        if isinstance(e, int):
-            e = "Edge%d" % e
-        if isinstance(e, str):
-            if not e.startswith("Edge"):
-                raise C2BlendError("%s is not an edge; select edges to fillet" % e,
-                                   "%s.%s" % (label, e))
-            try:
-                edge = shape.getElement(e)
-            except Exception:
-                raise C2BlendError("no such edge (the shape has %d edges)" % len(shape.Edges),
-                                   "%s.%s" % (label, e)) from None
-            out.append((e, edge))
-            continue
-        if not isinstance(e, Part.Shape) or e.ShapeType != "Edge":
-            kind = getattr(e, "ShapeType", type(e).__name__)
-            raise C2BlendError("a %s was given where an edge is needed; select edges to "
-                               "fillet" % kind, label)
-        name = ck.element_name(shape, e, "Edge")
-        if name == "?":
-            raise C2BlendError("the edge does not belong to the shape", label)
-        out.append((name, e))
-    if not out:
-        raise C2BlendError("no edges given", label)
+    """[(name, Part.Edge)] from Part.Edge objects, 'EdgeN' names or 1-based indices, each
+    between two faces that meet at an angle. Raises C2BlendError naming the offending
+    element."""
+    out = ck.named_edges(shape, edges, label, "fillet")
     for name, edge in out:
         faces = ck.edge_faces(shape, edge)
         if len(faces) == 1 and edge.isSeam(faces[0]):

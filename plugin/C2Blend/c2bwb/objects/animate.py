@@ -36,6 +36,18 @@ def save_view_png(view, path, width=800, height=600):
     os.replace(tmp, path)
 
 
+# spreadsheet aliases the Animate command looks for ("t" is the unit tonne in expressions)
+TIME_ALIASES = ("Time", "time")
+
+
+def clock_property(obj):
+    """The name of obj's time: 'Time' for an object with a Time property (a C2Clock), the
+    first alias of TIME_ALIASES a spreadsheet has, or None."""
+    if obj.TypeId == "Spreadsheet::Sheet":
+        return next((a for a in TIME_ALIASES if obj.getCellFromAlias(a)), None)
+    return "Time" if "Time" in obj.PropertiesList else None
+
+
 def _get_time(clock, prop):
     if clock.TypeId == "Spreadsheet::Sheet":
         cell = clock.getCellFromAlias(prop) or prop
@@ -55,11 +67,12 @@ def _set_time(clock, prop, value):
 def animate(doc, clock, times, targets, out_dir=None, fmt="step", prop="Time",
             snapshot=None):
     """Step clock.<prop> through times (clock: an object with a float property such as a
-    C2Clock's Time, or a spreadsheet with prop an alias or cell, e.g. "time"); after each recompute every target (C2Fillet or
-    C2Blend object) must be valid and report its verdict. Writes
-    out_dir/frame_NNN.<fmt> per frame, and calls snapshot(path) (GUI PNG) if given.
-    The clock is restored afterwards. Returns a list of frame dicts
-    {"t", "verdicts": {label: verdict}, "worst_g2_rel", "files"}."""
+    C2Clock's Time, or a spreadsheet with prop an alias or cell, e.g. "time"); after each
+    recompute every target (C2Fillet, C2Blend or C2Check object) must be valid and report
+    its verdict. Writes out_dir/<target>_frame_NNN.<fmt> per frame and target with a
+    shape, and calls snapshot(path) (GUI PNG) if given. The clock is restored
+    afterwards. Returns a list of frame dicts
+    {"t", "verdicts": {label: verdict}, "worst_g2_rel", "worst_g1", "files"}."""
     start = _get_time(clock, prop)
     frames = []
     try:
@@ -69,15 +82,16 @@ def animate(doc, clock, times, targets, out_dir=None, fmt="step", prop="Time",
             frame = {"t": float(t), "verdicts": {}, "worst_g2_rel": 0.0, "worst_g1": 0.0,
                      "files": []}
             for obj in targets:
-                if "Invalid" in obj.State or not obj.Shape.isValid():
+                shape = getattr(obj, "Shape", None)  # a C2Check has none
+                if "Invalid" in obj.State or (shape is not None and not shape.isValid()):
                     raise C2BlendError("frame %d (t = %g) failed to recompute" % (k, t),
                                        obj.Label, "numeric")
                 rep = json.loads(obj.Report)
                 frame["verdicts"][obj.Label] = rep["verdict"]
-                for r in rep["trimlines"]:
+                for r in rep["trimlines"] if "trimlines" in rep else rep["edges"]:
                     frame["worst_g2_rel"] = max(frame["worst_g2_rel"], r["g2_rel"])
                     frame["worst_g1"] = max(frame["worst_g1"], r["g1"])
-                if out_dir:
+                if out_dir and shape is not None:
                     path = os.path.join(out_dir, "%s_frame_%03d.%s" % (obj.Name, k, fmt))
                     write_shape(obj.Shape, path)
                     frame["files"].append(path)

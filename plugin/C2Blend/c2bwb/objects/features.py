@@ -33,12 +33,32 @@ def _shape_props(obj):
     obj.setEditorMode("Report", 1)
 
 
+def shape_params(continuity, values):
+    """The shape parameters of continuity from an object's (Gamma, Eta, Lambda, Rho): C2
+    uses all four, C1's (b, c, d) are the first three, C3's (a0..a4) are the four and 1."""
+    values = tuple(float(p) for p in values)
+    return {"C1": values[:3], "C2": values, "C3": values + (1.0,)}[continuity]
+
+
+def object_values(continuity, params_):
+    """(Gamma, Eta, Lambda, Rho) storing the shape parameters of continuity (as checked
+    by fillet.check_params), the inverse of shape_params. C3's five are divided by a4,
+    which leaves its PDE (homogeneous in them) unchanged. Raises ValueError when a4 is 0."""
+    p = tuple(float(x) for x in params_)
+    if continuity == "C1":
+        return p + (1.0,)
+    if continuity == "C3":
+        if p[4] == 0.0:
+            raise ValueError("a document object stores C3's shape parameters divided by a4, "
+                             "which must not be 0")
+        return tuple(x / p[4] for x in p[:4])
+    return p
+
+
 def params(obj):
-    """(continuity, shape parameters, tension) of an object. C2 uses (Gamma, Eta, Lambda,
-    Rho); C1 (b, c, d) = (Gamma, Eta, Lambda); C3 (a0..a4) = (Gamma, Eta, Lambda, Rho, 1)."""
-    sp = (obj.Gamma, obj.Eta, obj.Lambda, obj.Rho)
-    sp = {"C1": sp[:3], "C2": sp, "C3": sp + (1.0,)}[obj.Continuity]
-    return obj.Continuity, sp, obj.Tension
+    """(continuity, shape parameters, tension) of an object (see shape_params)."""
+    return (obj.Continuity, shape_params(obj.Continuity, (obj.Gamma, obj.Eta, obj.Lambda,
+                                                          obj.Rho)), obj.Tension)
 
 
 def _publish(obj, rep, header):
@@ -58,9 +78,9 @@ class _Proxy:
         return None
 
     def update(self, obj, title, compute):
-        """obj.Shape and report from compute() -> (shape, report). On C2BlendError the
-        previous shape is kept, the reason is printed and kept in last_error, and the
-        error propagates (FreeCAD marks the object invalid)."""
+        """obj.Shape (unless shape is None) and report from compute() -> (shape, report).
+        On C2BlendError the previous shape is kept, the reason is printed and kept in
+        last_error, and the error propagates (FreeCAD marks the object invalid)."""
         try:
             shape, rep = compute()
         except C2BlendError as ex:
@@ -69,7 +89,8 @@ class _Proxy:
                                        % (title, obj.Label, ex))
             raise
         self.last_error = ""
-        obj.Shape = shape
+        if shape is not None:
+            obj.Shape = shape
         _publish(obj, rep, "%s %s: %s" % (title, obj.Label, rep["verdict"]))
 
 
@@ -142,11 +163,8 @@ class C2Check(_Proxy):
 
     def execute(self, obj):
         o, subs = obj.Target
-        rep = ck.check(o.Shape, list(subs), obj.Samples)
-        obj.Report = json.dumps(rep, default=float)
-        obj.Verdict = rep["verdict"]
-        FreeCAD.Console.PrintMessage("\n".join(["C2 Check %s: %s" % (o.Label, rep["verdict"])]
-                                               + ["  " + s for s in ck.format_report(rep)]) + "\n")
+        self.update(obj, "C2 Check", lambda: (None, ck.check(o.Shape, list(subs), obj.Samples,
+                                                             o.Label)))
 
 
 class C2Clock(_Proxy):

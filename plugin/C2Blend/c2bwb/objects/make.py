@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Create C2Blend objects in a document. On failure the document is left as it was:
-the geometry is computed (and may fail) before anything is added, and the addition is
-one undo transaction that is aborted if the first recompute fails."""
+the selection and parameters are checked before anything is added; the object is then
+added in one undo transaction, and if its first recompute fails the transaction is
+aborted and the object removed (documents made by scripts and freecadcmd have UndoMode
+0, where aborting undoes nothing)."""
 import FreeCAD
 
 from ..errors import C2BlendError
@@ -14,6 +16,7 @@ else:
 
 
 def _add(doc, type_name, name, proxy_cls, setup):
+    before = {o.Name for o in doc.Objects}
     doc.openTransaction("C2Blend: add " + name)
     try:
         obj = doc.addObject(type_name, name)
@@ -27,6 +30,9 @@ def _add(doc, type_name, name, proxy_cls, setup):
             raise C2BlendError(why, "", getattr(obj.Proxy, "last_kind", "numeric"))
     except Exception:
         doc.abortTransaction()
+        for o in reversed(doc.Objects):  # what aborting left (UndoMode 0)
+            if o.Name not in before:
+                doc.removeObject(o.Name)
         doc.recompute()
         raise
     doc.commitTransaction()
@@ -34,9 +40,22 @@ def _add(doc, type_name, name, proxy_cls, setup):
 
 
 def _set_params(obj, continuity, shape_params, tension):
+    """Store checked parameters (fillet.check_params) in obj (features.object_values)."""
     obj.Continuity = continuity
-    obj.Gamma, obj.Eta, obj.Lambda, obj.Rho = (float(p) for p in shape_params)
+    obj.Gamma, obj.Eta, obj.Lambda, obj.Rho = features.object_values(continuity, shape_params)
     obj.Tension = float(tension)
+
+
+def _checked_params(radius, continuity, shape_params, tension, label):
+    """The shape parameters of continuity, checked with the radius and tension; raises
+    C2BlendError naming label."""
+    from ..geometry import fillet as fl
+    sp = fl.check_params(radius, continuity, shape_params, tension, label)
+    try:
+        features.object_values(continuity, sp)
+    except ValueError as ex:
+        raise C2BlendError("shape_params: %s" % ex, label) from None
+    return sp
 
 
 def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0):
@@ -44,25 +63,28 @@ def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
     The selection and parameters are validated before the document is touched; any
     later failure aborts the transaction, so the document is left as it was."""
     from ..geometry import fillet as fl
-    fl.check_params(radius, continuity, shape_params, tension, base.Label)
+    sp = _checked_params(radius, continuity, shape_params, tension, base.Label)
     fl.resolve_edges(base.Shape, list(edges), base.Label)
 
     def setup(obj):
         obj.Base = (base, list(edges))
         obj.Radius = float(radius)
-        _set_params(obj, continuity, shape_params, tension)
-        if FreeCAD.GuiUp:
-            base.ViewObject.Visibility = False
-    return _add(base.Document, "Part::FeaturePython", "C2Fillet", features.C2Fillet, setup)
+        _set_params(obj, continuity, sp, tension)
+    obj = _add(base.Document, "Part::FeaturePython", "C2Fillet", features.C2Fillet, setup)
+    if FreeCAD.GuiUp:
+        base.ViewObject.Visibility = False
+    return obj
 
 
 def make_blend(side1, side2, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0,
                make_solid=False):
     """A C2BlendFaces object; side = (object, ['FaceN', 'EdgeM'])."""
+    sp = _checked_params(1.0, continuity, shape_params, tension, side1[0].Label)
+
     def setup(obj):
         obj.Edge1, obj.Edge2 = side1, side2
         obj.MakeSolid = bool(make_solid)
-        _set_params(obj, continuity, shape_params, tension)
+        _set_params(obj, continuity, sp, tension)
     return _add(side1[0].Document, "Part::FeaturePython", "C2Blend", features.C2BlendFaces,
                 setup)
 

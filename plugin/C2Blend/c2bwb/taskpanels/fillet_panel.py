@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Task panel of C2 Fillet: radius, continuity, gamma, eta, lambda, rho and tension
-with a live preview (a view decoration, so the document is not touched until OK)."""
+with a live preview (a view decoration, so the document is not touched until OK).
+C1 takes gamma, eta, lambda as its b, c, d; C3 takes the four as a0..a3 with a4 = 1."""
 import math
 
 import FreeCADGui
@@ -9,12 +10,14 @@ from pivy import coin
 
 from ..errors import C2BlendError
 from ..geometry import fillet as fl
-from ..objects import make
+from ..objects import features, make
 
-# (name, low, high): shape parameters on a log scale (their effect grows with the
-# v-frequency of the data, so useful values span decades), tension linear
+# (name, low, high) of the sliders: shape parameters on a log scale (their effect grows
+# with the v-frequency of the data, so useful values span decades), tension linear. The
+# box beside each slider takes any value, negative shape parameters too.
 SLIDERS = (("Gamma", 0.01, 100.0), ("Eta", 0.01, 100.0), ("Lambda", 0.01, 100.0),
            ("Rho", 0.01, 100.0), ("Tension", 0.2, 3.0))
+DECIMALS = 6
 
 
 class FilletPanel:
@@ -37,21 +40,23 @@ class FilletPanel:
         if obj:
             self.cont.setCurrentIndex(["C2", "C1", "C3"].index(obj.Continuity))
         lay.addRow("Continuity", self.cont)
-        self.sliders = {}
+        self.sliders, self.spins = {}, {}
         for name, lo, hi in SLIDERS:
             s = QtGui.QSlider(QtCore.Qt.Horizontal)
             s.setRange(0, 1000)
             s.lo, s.hi = lo, hi
-            s.exact = getattr(obj, name) if obj else 1.0
-            s.setValue(self.position(s, s.exact))
-            label = QtGui.QLabel()
-            s.valueChanged.connect(lambda _v, s=s, label=label: label.setText("%.3f" % self.value(s)))
-            label.setText("%.3f" % self.value(s))
+            box = QtGui.QDoubleSpinBox()  # the value; the slider moves it on its scale
+            box.setDecimals(DECIMALS)
+            box.setRange(1e-6 if name == "Tension" else -1e6, 1e6)
+            box.setValue(getattr(obj, name) if obj else 1.0)
+            s.setValue(self.position(s, box.value()))
+            s.valueChanged.connect(lambda _v, s=s, box=box: box.setValue(self.value(s)))
+            box.valueChanged.connect(lambda v, s=s: self.follow(s, v))
             row = QtGui.QHBoxLayout()
             row.addWidget(s)
-            row.addWidget(label)
+            row.addWidget(box)
             lay.addRow(name, row)
-            self.sliders[name] = s
+            self.sliders[name], self.spins[name] = s, box
         self.status = QtGui.QLabel()
         self.status.setWordWrap(True)
         lay.addRow(self.status)
@@ -59,23 +64,26 @@ class FilletPanel:
         self.timer = QtCore.QTimer()
         self.timer.setSingleShot(True)
         self.timer.timeout.connect(self.preview)
-        for w in list(self.sliders.values()):
+        for w in list(self.spins.values()):
             w.valueChanged.connect(lambda _v: self.timer.start(150))
         self.radius.valueChanged.connect(lambda _v: self.timer.start(150))
         self.cont.currentIndexChanged.connect(lambda _v: self.timer.start(150))
         self.timer.start(10)
 
-    @classmethod
-    def value(cls, s):
-        """Slider position (0..1000) to parameter value; the exact value it was set to
-        while it stays at that value's position (a tension of 1 is at position 286,
-        which is 1.0008: an unmoved slider must not change the fillet)."""
-        if s.value() == cls.position(s, s.exact):
-            return s.exact
+    @staticmethod
+    def value(s):
+        """Slider position (0..1000) to parameter value."""
         x = s.value() / 1000.0
         if s.lo > 0 and s.hi / s.lo > 100:
             return s.lo * (s.hi / s.lo) ** x
         return s.lo + (s.hi - s.lo) * x
+
+    def follow(self, s, value):
+        """Move slider s to a value typed in its box, without changing the value (a
+        tension of 1 is at position 286, which is 1.0008: the box keeps 1)."""
+        s.blockSignals(True)
+        s.setValue(self.position(s, value))
+        s.blockSignals(False)
 
     @staticmethod
     def position(s, value):
@@ -87,13 +95,20 @@ class FilletPanel:
         return int(round(1000 * min(max(x, 0.0), 1.0)))
 
     def parameters(self):
-        v = {k: self.value(s) for k, s in self.sliders.items()}
+        """(radius, continuity, (Gamma, Eta, Lambda, Rho), tension) as shown."""
+        v = {k: box.value() for k, box in self.spins.items()}
         return (self.radius.value(), self.cont.currentText(),
                 (v["Gamma"], v["Eta"], v["Lambda"], v["Rho"]), v["Tension"])
 
+    def fillet_parameters(self):
+        """(radius, continuity, its shape parameters, tension): C1 takes the first three
+        of Gamma..Rho, C3 the four and 1 (features.shape_params)."""
+        radius, cont, sp, tension = self.parameters()
+        return radius, cont, features.shape_params(cont, sp), tension
+
     def preview(self):
         """Recompute the fillet for the current values and show it in the view."""
-        radius, cont, sp, tension = self.parameters()
+        radius, cont, sp, tension = self.fillet_parameters()
         self.clear_preview()
         try:
             solid, rep = fl.fillet(self.base.Shape, self.edges, radius, cont, sp, tension,
@@ -132,7 +147,7 @@ class FilletPanel:
     def accept(self):
         self.timer.stop()
         self.clear_preview()
-        radius, cont, sp, tension = self.parameters()
+        radius, cont, sp, tension = self.fillet_parameters()
         try:
             if self.obj is None:
                 self.obj = make.make_fillet(self.base, self.edges, radius, cont, sp, tension)
@@ -141,7 +156,8 @@ class FilletPanel:
                 doc.openTransaction("C2 Fillet: edit")
                 self.obj.Radius = radius
                 self.obj.Continuity = cont
-                self.obj.Gamma, self.obj.Eta, self.obj.Lambda, self.obj.Rho = sp
+                self.obj.Gamma, self.obj.Eta, self.obj.Lambda, self.obj.Rho = \
+                    features.object_values(cont, sp)
                 self.obj.Tension = tension
                 doc.recompute()
                 if "Invalid" in self.obj.State:
