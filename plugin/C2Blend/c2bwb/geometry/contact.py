@@ -55,11 +55,12 @@ class ContactError(Exception):
     """The exact contact cannot be traced (Newton failed, or the faces are parallel)."""
 
 
-def _normal_frame(face, u, v):
+def _normal_frame(face, u, v, surface):
     """Point, S_u, S_v, unit normal (oriented like the face) and its u and v derivatives
-    (surface.Frame). Raises ContactError where the face is degenerate."""
+    (surface.Frame; surface is face.Surface). Raises ContactError where the face is
+    degenerate."""
     try:
-        f = Frame(face, u, v)
+        f = Frame(face, u, v, surface)
     except ValueError as ex:
         raise ContactError("the face is degenerate: %s" % ex) from None
     nu, nv = f.normal_derivatives()
@@ -108,6 +109,7 @@ class Contact:
     def __init__(self, chain, radius, extend=(0.0, 0.0), arc_length=True):
         self.chain, self.radius = chain, radius
         self.f1, self.f2 = chain.sides
+        self.s1, self.s2 = self.f1.Surface, self.f2.Surface
         self.sections = _extended(chain.sections, extend)
         self.signs = None
         self.solved = [([], []) for _ in self.sections]  # per section: sorted a, solutions
@@ -119,7 +121,7 @@ class Contact:
 
     def _guess(self, sec, a):
         q1, q2 = sec.rbf.point(a, sec.c1), sec.rbf.point(a, sec.c2)
-        return list(self.f1.Surface.parameter(q1)) + list(self.f2.Surface.parameter(q2))
+        return list(self.s1.parameter(q1)) + list(self.s2.parameter(q2))
 
     def _warm(self, k, a):
         """Newton's start at guide parameter a: the solution at the nearest parameter
@@ -135,8 +137,8 @@ class Contact:
 
     def _signs(self, x):
         """(g1, g2): the ball's side of each face, from OCCT's contact points x."""
-        p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1])
-        p2, _, _, n2, _, _ = _normal_frame(self.f2, x[2], x[3])
+        p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1], self.s1)
+        p2, _, _, n2, _, _ = _normal_frame(self.f2, x[2], x[3], self.s2)
         r = self.radius
         return min(((a * r, b * r) for a in (1, -1) for b in (1, -1)),
                    key=lambda g: ((p1 + n1 * g[0]) - (p2 + n2 * g[1])).Length)
@@ -146,7 +148,7 @@ class Contact:
         t the unit spine tangent (oriented like the section), speed = |dc/da| signed so
         that arc length grows along the section, and x = (u1, v1, u2, v2)."""
         sec = self.sections[k]
-        r, s = sec.rbf, sec.rbf.face.Surface
+        r, s = sec.rbf, sec.rbf.surface
         m, d1 = r.point(a, sec.cm), r.derivative(a, sec.cm, True)
         d2 = s.getDN(a, sec.cm, 2, 0) if r.along == 0 else s.getDN(sec.cm, a, 0, 2)
         dl = d1.Length
@@ -168,8 +170,8 @@ class Contact:
             self.signs = self._signs(x)
         g1, g2 = self.signs
         for _ in range(MAX_NEWTON):
-            p1, s1u, s1v, n1, n1u, n1v = _normal_frame(self.f1, x[0], x[1])
-            p2, s2u, s2v, n2, n2u, n2v = _normal_frame(self.f2, x[2], x[3])
+            p1, s1u, s1v, n1, n1u, n1v = _normal_frame(self.f1, x[0], x[1], self.s1)
+            p2, s2u, s2v, n2, n2u, n2v = _normal_frame(self.f2, x[2], x[3], self.s2)
             c = p1 + n1 * g1
             d = c - (p2 + n2 * g2)
             cols = (s1u + n1u * g1, s1v + n1v * g1, -(s2u + n2u * g2), -(s2v + n2v * g2))
@@ -186,8 +188,8 @@ class Contact:
         else:
             raise ContactError("Newton's method for the exact rolling-ball contact did not "
                                "converge near (%.6g, %.6g, %.6g)" % (m.x, m.y, m.z))
-        p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1])
-        p2 = self.f2.Surface.value(x[2], x[3])
+        p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1], self.s1)
+        p2 = self.s2.value(x[2], x[3])
         c = p1 + n1 * g1
         t = (p1 - c).cross(p2 - c)
         if t.Length <= 1e-12 * self.radius ** 2:
@@ -207,7 +209,7 @@ class Contact:
         along the spine (by 1.7e-6 there), so arc length is integrated per piece and
         the pieces are joined by their measured gaps (_join)."""
         sec = self.sections[k]
-        s = sec.rbf.face.Surface
+        s = sec.rbf.surface
         knots = getattr(s, "getUKnots" if sec.rbf.along == 0 else "getVKnots", list)()
         lo, hi = sorted((sec.a_start, sec.a_end))
         spans = sorted(set([lo, hi] + [q for q in knots if lo < q < hi]))
@@ -315,6 +317,6 @@ class Contact:
         out = []
         for j in range(n):
             p1, p2, _, t, x = self.at_length(min(j * span, self.length))
-            out.append((Frame(self.f1, x[0], x[1]), t, p2 - p1,
-                        Frame(self.f2, x[2], x[3]), t, p1 - p2))
+            out.append((Frame(self.f1, x[0], x[1], self.s1), t, p2 - p1,
+                        Frame(self.f2, x[2], x[3], self.s2), t, p1 - p2))
         return out

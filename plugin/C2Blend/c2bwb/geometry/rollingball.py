@@ -97,6 +97,7 @@ class RollingBallFace:
 
     def __init__(self, result, face, fillet_faces):
         self.face = face
+        self.surface = face.Surface  # kept: getting it costs as much as an evaluation
         self.contacts, self.ends, self.links, self.corners = [], [], [], []
         self.corner = None
         met = 0  # fillets met at an angle
@@ -152,12 +153,12 @@ class RollingBallFace:
 
     def point(self, a, c):
         """Surface point at along-parameter a and across-parameter c."""
-        return self.face.Surface.value(a, c) if self.along == 0 else self.face.Surface.value(c, a)
+        return self.surface.value(a, c) if self.along == 0 else self.surface.value(c, a)
 
     def derivative(self, a, c, along):
         """First derivative of the face's surface along (True) or across (False)."""
         du = 1 if (self.along == 0) == along else 0
-        return self.face.Surface.getDN(*((a, c) if self.along == 0 else (c, a)), du, 1 - du)
+        return self.surface.getDN(*((a, c) if self.along == 0 else (c, a)), du, 1 - du)
 
     def along_at(self, edge):
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
