@@ -660,6 +660,12 @@ def test_blend_coaxial_cylinders():
     common = [e for e in shell.Edges if len(ck.edge_faces(shell, e)) == 2
               and not e.isSeam(ck.edge_faces(shell, e)[0])]
     assert C2Blend.check(shell, common)["verdict"] == "G0"
+    # OCCT has no blend across a gap to compare with; the tangent-only (C1) blend is G1,
+    # and the check reports its curvature jump across each trimline: the cylinders'
+    # axial normal curvature is 0, the blend's is not
+    _, rep1 = C2Blend.blend(fa, ea, fb, eb, continuity="C1", report=True)
+    assert rep1["verdict"] == "G1"
+    assert min(r["g2"] for r in rep1["trimlines"]) > 0.5  # 1.30 and 1.07
 
 
 # 5. shape parameters change the shape, not the continuity --------------------------------
@@ -684,6 +690,10 @@ def test_shape_parameters_change_shape_not_continuity():
                 for v in (v0, 0.5 * (v0 + v1)))
     assert moved > 1e-3  # the interior moved ...
     assert abs(f.Shape.Volume - before.Volume) > 1e-3
+    # OCCT's fillet of the same edge (no shape parameters): the jump 1/R across both
+    # contact edges, which the same check reports
+    occt, _ = occt_jump(s, [edge], 2.0)
+    assert all(abs(r["g2"] - 0.5) < 1e-9 for r in occt["edges"])
     FreeCAD.closeDocument(doc.Name)
 
 
@@ -713,6 +723,11 @@ def test_animation_10_frames(tmp_path):
     assert vols[-1] - vols[0] > 1.0  # radius 1 -> 1.3 over a height of 2
     assert not [p for p in os.listdir(tmp_path) if p.startswith(".")]  # no temporaries
     assert clock.Time == 0.0
+    # the comparison (no OCCT blend across a gap): a tangent-only (C1) blend animated
+    # alike is G1 at every frame, with a curvature jump across its trimlines
+    c1 = make.make_blend(side_a, side_b, "C1", (1, 1, 1))
+    for fr in animate.animate(doc, clock, [0.0, 0.5, 1.0], [c1]):
+        assert fr["verdicts"] == {c1.Label: "G1"} and fr["worst_g2_rel"] > 0.5
     FreeCAD.closeDocument(doc.Name)
 
 
@@ -1848,3 +1863,42 @@ def test_tessellation_takes_the_nodes_parameters():
         assert max((face.Surface.value(*uv) - p).Length for p, uv in zip(pts, uvs)) < tol
         kinds.add(type(face.Surface).__name__)
     assert {"BSplineSurface", "Cylinder", "Plane"} <= kinds
+
+
+def _c2_then_top():
+    """A box whose vertical edges C2Blend filleted (R = 3): its top outline runs along
+    planes and the four B-spline blends, G2 to each other."""
+    b = Part.makeBox(20, 20, 10)
+    s = fl.fillet(b, ["Edge%d" % (i + 1) for i, e in enumerate(b.Edges)
+                      if e.BoundBox.ZLength > 9], 3.0)[0]
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if e.BoundBox.ZMin > 9.9], 1.0
+
+
+def _periodic_closure():
+    """A pad on FreeCAD's periodic interpolation through 7 points: the top outline is one
+    closed B-spline edge whose side face has 7 knot lines."""
+    pts = [V(10 * math.cos(2 * math.pi * k / 7) * (1 + 0.2 * math.sin(4 * math.pi * k / 7)),
+             8 * math.sin(2 * math.pi * k / 7), 0) for k in range(7)]
+    c = Part.BSplineCurve()
+    c.interpolate(pts, PeriodicFlag=True)
+    s = Part.Face(Part.Wire(c.toShape())).extrude(V(0, 0, 5))
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if e.BoundBox.ZMin > 4.9 and not e.Degenerated], 1.0
+
+
+@pytest.mark.parametrize("make,runs", [(_c2_then_top, 8), (_periodic_closure, 7)],
+                         ids=["c2_then_top", "periodic_closure"])
+def test_runs_meeting_at_a_crease_are_sampled_finer(make, runs):
+    """Where the side changes face, or crosses a knot line, the chain is cut into runs,
+    each with its own pointwise blend. With the data sampled to 1e-8, the blends of two
+    runs met at creases of 1.9e-7 rad (the C2-filleted box) and 2.6e-7 rad (the periodic
+    pad), and OCCT's faces were kept. The runs there are now sampled to 1e-9, then 1e-10:
+    every junction must be within the G1 limit, every trimline G2, and nothing kept."""
+    s, names, radius = make()
+    solid, rep = fl.fillet(s, names, radius, label="Part")
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == [] and len(rep["blends"]) == runs
+    assert rep["verdict"] == "G2"
+    assert len(rep["junctions"]) == runs
+    assert max(j["g1"] for j in rep["junctions"]) < ck.TOL_G1
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
