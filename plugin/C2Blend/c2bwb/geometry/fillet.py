@@ -237,14 +237,17 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
     sides give the same data there. Where a side changes face, the runs first end where
     the exact contact crosses the edge between its faces (knots.at_face_changes). They
     do not meet where the faces' normal curvatures across the fillet differ (a side
-    face's edge crossing the trimline obliquely): no surface is G2 to both there.
-    closed: the last run meets the first. Returns [Blended], each with group set.
-    Raises NotReplaced saying why the chain cannot be replaced."""
+    face's edge crossing the trimline obliquely): no surface is G2 to both there. The
+    runs at a junction where their blends meet at a crease are sampled again to the
+    lower targets of JUNCTION_DATA_REL. closed: the last run meets the first. Returns
+    [Blended], each with group set. Raises NotReplaced saying why the chain cannot be
+    replaced."""
     shape = pointwise_shape(continuity)
     try:
         runs = at_face_changes(runs, closed, radius)
     except ContactError as ex:
         raise NotReplaced(str(ex)) from None
+
     def solved(run, target=DATA_REL, start=samples):
         return solve_face(run, radius, where, continuity, shape, tension, tol_rel, start,
                           max_samples, fillet_faces, target)
