@@ -4,6 +4,7 @@
     import C2Blend
     solid = C2Blend.fillet(shape, ["Edge10"], 2.0)                  # Part.Solid
     solid, report = C2Blend.fillet_report(shape, ["Edge10"], 2.0)   # Part.Solid, dict
+    radius = C2Blend.radius_for_setback(shape, ["Edge10"], 1.5)     # model units
     face = C2Blend.blend(face1, edge1, face2, edge2)                # Part.Face
     face, report = C2Blend.blend(face1, edge1, face2, edge2, report=True)
     report = C2Blend.check(shape, ["Edge3"])                        # dict
@@ -19,8 +20,8 @@ from c2bwb.geometry import blendfaces as _blendfaces
 from c2bwb.geometry import check as _check
 from c2bwb.geometry import fillet as _fillet
 
-__all__ = ["Error", "fillet", "fillet_report", "blend", "blend_solid", "check",
-           "format_report"]
+__all__ = ["Error", "fillet", "fillet_report", "radius_for_setback", "blend", "blend_solid",
+           "check", "format_report"]
 
 
 def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
@@ -41,6 +42,13 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), ten
            label="Shape"):
     """Fillet edges of shape; returns the filleted Part.Solid (see fillet_report)."""
     return fillet_report(shape, edges, radius, continuity, shape_params, tension, label)[0]
+
+
+def radius_for_setback(shape, edges, setback, label="Shape"):
+    """The radius whose fillet of edges lies `setback` from each edge, across it (exact
+    between planes: R = setback / tan(alpha / 2), alpha the angle between the faces'
+    normals); edges needing different radii raise C2Blend.Error."""
+    return _fillet.radius_for_setback(shape, edges, float(setback), label)
 
 
 def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1),

@@ -1902,3 +1902,38 @@ def test_runs_meeting_at_a_crease_are_sampled_finer(make, runs):
     assert len(rep["junctions"]) == runs
     assert max(j["g1"] for j in rep["junctions"]) < ck.TOL_G1
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
+def _vertical_edges(s):
+    return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+            if e.BoundBox.XLength < 1e-9 and e.BoundBox.YLength < 1e-9]
+
+
+@pytest.mark.parametrize("make,setback,radius", [
+    (shapes.box, 1.5, 1.5),  # faces at 90 degrees: the radius is the setback
+    (lambda: shapes.hex_prism()[0], 1.5, 1.5 * math.sqrt(3.0))])  # 120: R = s / tan 30
+def test_fillet_by_setback(make, setback, radius):
+    """A setback gives the radius whose trimlines lie that far from the edge. Measured on
+    the result: each trimline's midpoint lies `setback` from the original edge."""
+    s = make()
+    edge = _vertical_edges(s)[0]
+    r = C2Blend.radius_for_setback(s, [edge], setback, label="Part")
+    assert r == pytest.approx(radius, rel=1e-12)
+    solid, rep = C2Blend.fillet_report(s, [edge], r, label="Part")
+    assert_g2(rep)
+    orig = s.getElement(edge)
+    trims = [solid.getElement(t["edge"]) for t in rep["trimlines"]]
+    assert len(trims) == 2
+    for t in trims:
+        assert orig.distToShape(Part.Vertex(rb.midpoint(t)))[0] == pytest.approx(setback, abs=1e-9)
+
+
+def test_setback_errors_name_the_edges():
+    s, _ = shapes.slanted_l_bracket("z")  # the slanted end meets its neighbours at 70/110
+    names = _vertical_edges(s)
+    with pytest.raises(C2BlendError, match=r"^Part: setback must be a positive number"):
+        C2Blend.radius_for_setback(s, names[:1], -1.0, label="Part")
+    with pytest.raises(C2BlendError, match=r"Part\.Edge\d+: setback 1 needs radius [0-9.]+ at "
+                       r"Part\.Edge\d+ but [0-9.]+ at Part\.Edge\d+, whose faces meet at "
+                       r"another angle; a fillet has one radius"):
+        C2Blend.radius_for_setback(s, names, 1.0, label="Part")

@@ -127,7 +127,8 @@ try:
     edit.timer.stop()
     result["c1_accepted"] = edit.accept()
     result["c1_object"] = [fillet.Continuity, fillet.Verdict, "Invalid" in fillet.State]
-    # all 12 edges of a box through the command and its panel, left at its defaults:
+    # all 12 edges of a box through the command and its panel, left at its defaults but
+    # for the size, given as a setback:
     # 12 blends and 8 plate-filled corners (this froze FreeCAD in OCCT's BOP check at
     # tension 1.0008, where the panel's tension slider rounded 1.0)
     doc3 = FreeCAD.newDocument("BoxCorners")
@@ -138,10 +139,12 @@ try:
         FreeCADGui.Selection.addSelection(box, "Edge%d" % (i + 1))
     FreeCADGui.runCommand("C2Blend_Fillet")
     panel = commands.Fillet.panel
+    panel.size.setCurrentIndex(1)  # a setback of 2 on edges at 90 degrees: radius 2
     panel.radius.setValue(2.0)
     result["box_parameters"] = panel.parameters()
     assert panel.accept() is True
     rounded = doc3.getObject("C2Fillet")
+    result["box_radius"] = rounded.Radius.Value
     report = json.loads(rounded.Report)
     result["box_blends"] = len(report["blends"])
     result["box_corners"] = len(report["corner_patches"])

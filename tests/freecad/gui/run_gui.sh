@@ -42,11 +42,12 @@ assert r["typed"] == [1.0, 286, -0.5, 0], r
 assert r["c1_parameters"] == [2.0, "C1", [2.5, 1.0, 1.0], 1.0], r
 assert r["c1_accepted"] is True and r["c1_object"] == ["C1", "G1", False], r
 assert r["box_parameters"] == [2.0, "C2", [1.0, 1.0, 1.0, 1.0], 1.0], r
+assert abs(r["box_radius"] - 2.0) < 1e-12, r
 assert r["box_blends"] == 12 and r["box_corners"] == 8 and r["box_valid"], r
 assert r["box_solid_check"] == "passes BRepCheck and the BOP check", r
 print("gui test: G2 fillet, curvature map shown, screenshot not blank; G2 blend faces; "
       "10 PNG animation frames; the panel keeps exact values and makes a C1 fillet; a box's "
-      "12 edges with 8 "
+      "12 edges by setback, with 8 "
       "filled corners")
 PY
 if [ -n "$C2B_CGAL_TOOL" ]; then

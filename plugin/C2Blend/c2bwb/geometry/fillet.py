@@ -102,6 +102,31 @@ def resolve_edges(shape, edges, label):
     return out
 
 
+def radius_for_setback(shape, edges, setback, label="Shape"):
+    """The rolling-ball radius (model units) whose contacts lie `setback` (model units)
+    from the edges of shape, across each: R = setback / tan(alpha / 2), alpha the angle
+    between the faces' normals at the edge's midpoint. Exact where the faces are planes;
+    on curved faces the contacts' distance differs by the faces' curvature. Raises
+    C2BlendError naming `label` and the edges for a setback that is not a positive
+    number, bad edges (resolve_edges), or edges whose angles need radii more than 1e-9
+    (relative) apart: a fillet has one radius."""
+    if not (isinstance(setback, (int, float)) and math.isfinite(setback) and setback > 0):
+        raise C2BlendError("setback must be a positive number, got %r" % (setback,), label,
+                           "radius")
+    radii = []
+    for name, edge in resolve_edges(shape, edges, label):
+        faces, p = ck.edge_faces(shape, edge), midpoint(edge)
+        alpha = angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
+        radii.append((setback / math.tan(0.5 * alpha), "%s.%s" % (label, name)))
+    lo, hi = min(radii), max(radii)
+    if hi[0] - lo[0] > 1e-9 * hi[0]:
+        raise C2BlendError("setback %g needs radius %.6g at %s but %.6g at %s, whose faces "
+                           "meet at another angle; a fillet has one radius: give a radius, "
+                           "or fillet these edges apart" % (setback, lo[0], lo[1], hi[0], hi[1]),
+                           ", ".join(n for _, n in radii), "radius")
+    return radii[0][0]
+
+
 def check_solid(shape, label):
     """Raise C2BlendError naming `label` unless shape is one closed solid."""
     solids = [] if shape.isNull() else shape.Solids

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""Task panel of C2 Fillet: radius, continuity, gamma, eta, lambda, rho and tension
-with a live preview (a view decoration, so the document is not touched until OK).
+"""Task panel of C2 Fillet: radius (or setback), continuity, gamma, eta, lambda, rho and
+tension with a live preview (a view decoration, so the document is not touched until OK).
 C1 takes gamma, eta, lambda as its b, c, d; C3 takes the four as a0..a3 with a4 = 1."""
 import math
 
@@ -30,11 +30,16 @@ class FilletPanel:
         self.form = QtGui.QWidget()
         self.form.setWindowTitle("C2 Fillet")
         lay = QtGui.QFormLayout(self.form)
+        self.size = QtGui.QComboBox()  # what the number is: the radius or the setback
+        self.size.addItems(["Radius", "Setback"])
         self.radius = QtGui.QDoubleSpinBox()
         self.radius.setRange(1e-4, 1e6)
         self.radius.setDecimals(4)
         self.radius.setValue(float(obj.Radius) if obj else 1.0)
-        lay.addRow("Radius", self.radius)
+        row = QtGui.QHBoxLayout()
+        row.addWidget(self.size)
+        row.addWidget(self.radius)
+        lay.addRow("Size", row)
         self.cont = QtGui.QComboBox()
         self.cont.addItems(["C2", "C1", "C3"])
         if obj:
@@ -67,6 +72,7 @@ class FilletPanel:
         for w in list(self.spins.values()):
             w.valueChanged.connect(lambda _v: self.timer.start(150))
         self.radius.valueChanged.connect(lambda _v: self.timer.start(150))
+        self.size.currentIndexChanged.connect(lambda _v: self.timer.start(150))
         self.cont.currentIndexChanged.connect(lambda _v: self.timer.start(150))
         self.timer.start(10)
 
@@ -95,22 +101,25 @@ class FilletPanel:
         return int(round(1000 * min(max(x, 0.0), 1.0)))
 
     def parameters(self):
-        """(radius, continuity, (Gamma, Eta, Lambda, Rho), tension) as shown."""
+        """(radius or setback, continuity, (Gamma, Eta, Lambda, Rho), tension) as shown."""
         v = {k: box.value() for k, box in self.spins.items()}
         return (self.radius.value(), self.cont.currentText(),
                 (v["Gamma"], v["Eta"], v["Lambda"], v["Rho"]), v["Tension"])
 
     def fillet_parameters(self):
-        """(radius, continuity, its shape parameters, tension): C1 takes the first three
-        of Gamma..Rho, C3 the four and 1 (features.shape_params)."""
-        radius, cont, sp, tension = self.parameters()
+        """(radius, continuity, its shape parameters, tension): a setback becomes the
+        radius (fillet.radius_for_setback); C1 takes the first three of Gamma..Rho, C3
+        the four and 1 (features.shape_params). Raises C2BlendError."""
+        size, cont, sp, tension = self.parameters()
+        radius = size if self.size.currentText() == "Radius" else \
+            fl.radius_for_setback(self.base.Shape, self.edges, size, self.base.Label)
         return radius, cont, features.shape_params(cont, sp), tension
 
     def preview(self):
         """Recompute the fillet for the current values and show it in the view."""
-        radius, cont, sp, tension = self.fillet_parameters()
         self.clear_preview()
         try:
+            radius, cont, sp, tension = self.fillet_parameters()
             solid, rep = fl.fillet(self.base.Shape, self.edges, radius, cont, sp, tension,
                                    self.base.Label, bop=False)  # OK runs the full check
         except C2BlendError as ex:
@@ -120,8 +129,8 @@ class FilletPanel:
                        for k in rep["kept_occt_faces"])
         kept += "".join("\n%s filled, normals within %.1e rad (not G2)" % (c["where"], c["g1"])
                         for c in rep["corner_patches"])
-        self.status.setText("%s; %d blend face(s), fit deviation %.2g, %.0f ms%s"
-                            % (rep["verdict"], len(rep["blends"]),
+        self.status.setText("%s; radius %.6g; %d blend face(s), fit deviation %.2g, %.0f ms%s"
+                            % (rep["verdict"], radius, len(rep["blends"]),
                                max([b["fit_deviation"] for b in rep["blends"]] or [0.0]),
                                1e3 * rep["seconds"], kept))
         node = coin.SoSeparator()
@@ -147,8 +156,8 @@ class FilletPanel:
     def accept(self):
         self.timer.stop()
         self.clear_preview()
-        radius, cont, sp, tension = self.fillet_parameters()
         try:
+            radius, cont, sp, tension = self.fillet_parameters()
             if self.obj is None:
                 self.obj = make.make_fillet(self.base, self.edges, radius, cont, sp, tension)
             else:
