@@ -153,7 +153,7 @@ class Animate(_Command):
     """Animate: step the Time of a C2Clock and check the selected blends per frame."""
 
     ICON, MENU = "C2Blend_Animate.svg", "Animate"
-    TIP = ("Select a Clock (or a spreadsheet with a cell named Time, time or t) and C2Blend "
+    TIP = ("Select a Clock (or a spreadsheet with a cell named Time or time) and C2Blend "
            "objects; steps the time 0..1 in 10 frames, checks continuity and saves PNG "
            "frames")
 

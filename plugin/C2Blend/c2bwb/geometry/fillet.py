@@ -93,13 +93,18 @@ def resolve_edges(shape, edges, label):
                                % (len(faces), "" if len(faces) == 1 else "s", shape.ShapeType,
                                   len(shape.Solids)),
                                "%s.%s" % (label, name))
-        p = midpoint(edge)
-        a = angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
+        a = _normals_angle(faces, edge)
         if a < TANGENT_ANGLE:
             raise C2BlendError("the faces meet tangentially along the edge (their normals "
                                "differ by %.1e rad): there is no corner to fillet" % a,
                                "%s.%s" % (label, name))
     return out
+
+
+def _normals_angle(faces, edge):
+    """The angle (rad) between the normals of the two faces at edge's midpoint."""
+    p = midpoint(edge)
+    return angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
 
 
 def radius_for_setback(shape, edges, setback, label="Shape"):
@@ -115,8 +120,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
                            "radius")
     radii = []
     for name, edge in resolve_edges(shape, edges, label):
-        faces, p = ck.edge_faces(shape, edge), midpoint(edge)
-        alpha = angle(frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n)
+        alpha = _normals_angle(ck.edge_faces(shape, edge), edge)
         radii.append((setback / math.tan(0.5 * alpha), "%s.%s" % (label, name)))
     lo, hi = min(radii), max(radii)
     if hi[0] - lo[0] > 1e-9 * hi[0]:

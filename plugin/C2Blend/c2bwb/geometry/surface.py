@@ -157,18 +157,18 @@ def tessellation(face, deflection):
     surface point is nearest to it, within 1e-9 of the face's size. Only a point with no
     such node is projected by OCCT (0.4 ms and more on a B-spline surface)."""
     pts, tris = face.tessellate(deflection)
-    if not pts:
-        return pts, tris, []
-    surface, uvn = face.Surface, face.getUVNodes()
-    nodes = numpy.array([tuple(surface.value(u, v)) for u, v in uvn]).reshape(-1, 3)
+    surface, uvn = face.Surface, face.getUVNodes() if pts else []
+    if not uvn:
+        return pts, tris, [surface.parameter(p) for p in pts]
+    nodes = numpy.array([tuple(surface.value(u, v)) for u, v in uvn])
     tol = 1e-9 * max(face.BoundBox.DiagonalLength, 1e-300)
     uvs = []
     for k in range(0, len(pts), 512):  # nearest node, in blocks of points
         block = numpy.array([tuple(p) for p in pts[k:k + 512]])
-        d2 = ((block[:, None, :] - nodes[None, :, :]) ** 2).sum(axis=2) if len(uvn) else None
+        d2 = ((block[:, None, :] - nodes[None, :, :]) ** 2).sum(axis=2)
         for i, p in enumerate(pts[k:k + 512]):
-            j = int(d2[i].argmin()) if d2 is not None else -1
-            uvs.append(uvn[j] if j >= 0 and d2[i, j] <= tol * tol else surface.parameter(p))
+            j = int(d2[i].argmin())
+            uvs.append(uvn[j] if d2[i, j] <= tol * tol else surface.parameter(p))
     return pts, tris, uvs
 
 
