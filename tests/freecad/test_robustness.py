@@ -88,6 +88,8 @@ def test_bad_fillet_leaves_document_unchanged(doc, name, edges, radius, kw, frag
 BAD_BLENDS = [
     ((("Box", ["Face1"])), ("ShaftPlate", ["Face1", "Edge1"]), r"Edge1 needs one face and one of its edges"),
     ((("Box", ["Face1", "Edge5"])), ("ShaftPlate", ["Face1", "Edge1"]), r"Box\.Face1\+Edge5: the edge is not an edge of the selected face"),
+    ((("Box", ["Face1", "Edge1"])), ("ShaftPlate", ["Face99", "Edge1"]), r"ShaftPlate\.Face99\+Edge1: no such face: Face99 \(ShaftPlate has \d+ faces\)$"),
+    ((("Box", ["Face1", "Edge1x"])), ("ShaftPlate", ["Face1", "Edge1"]), r"Box\.Face1\+Edge1x: no such edge: Edge1x \(Box has 12 edges\)$"),
 ]
 
 

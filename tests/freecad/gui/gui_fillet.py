@@ -38,6 +38,17 @@ try:
         for cmd in ("C2Blend_Fillet", "C2Blend_BlendFaces", "C2Blend_Check"):
             FreeCADGui.runCommand(cmd)
     FreeCADGui.Control.closeDialog()
+    # Blend faces with an edge that is not the picked face's: refused before its panel
+    sh = part.Shape
+    stray = next(i for i, e in enumerate(sh.Edges)
+                 if not any(e.isSame(x) for x in sh.Faces[0].Edges))
+    FreeCADGui.Selection.clearSelection()
+    for sub in ("Face1", "Edge%d" % (stray + 1), "Face2", "Edge%d" % (
+            next(i for i, e in enumerate(sh.Edges) if e.isSame(sh.Faces[1].Edges[0])) + 1)):
+        FreeCADGui.Selection.addSelection(part, sub)
+    FreeCADGui.runCommand("C2Blend_BlendFaces")
+    result["blend_panel_opened"] = commands.BlendFaces.panel is not None
+    result["stray_edge"] = "ShaftPlate.Face1+Edge%d" % (stray + 1)
     result["warnings"] = warnings
     result["bad_selections_unchanged"] = before == shapes.document_state(doc)
     FreeCADGui.Selection.clearSelection()
@@ -46,7 +57,7 @@ try:
     panel = commands.Fillet.panel
     panel.radius.setValue(2.0)
     panel.preview()
-    result["preview_status"] = panel.status.text()
+    result["preview_status"] = panel.status.toPlainText()
     assert panel.accept() is True
     fillet = doc.getObject("C2Fillet")
     result["verdict"] = fillet.Verdict
@@ -90,8 +101,41 @@ try:
         FreeCADGui.Selection.addSelection(obj, "Face1")
         FreeCADGui.Selection.addSelection(obj, "Edge%d" % (shapes.circle_edge(obj.Shape, z) + 1))
     FreeCADGui.runCommand("C2Blend_BlendFaces")
+    # its panel: the preview, then one solid chosen before OK
+    bpanel = commands.BlendFaces.panel
+    bpanel.timer.stop()
+    bpanel.preview()
+    result["blend_preview"] = bpanel.status.toPlainText()
+    result["blend_preview_drawn"] = bpanel.preview_node is not None
+    bpanel.solid.setChecked(True)
+    bpanel.timer.stop()
+    bpanel.preview()
+    result["blend_solid_preview"] = bpanel.status.toPlainText()
+    FreeCADGui.ActiveDocument.ActiveView.viewIsometric()
+    FreeCADGui.SendMsgToActiveView("ViewFit")
+    FreeCADGui.updateGui()
+    FreeCADGui.getMainWindow().grab().save(os.path.join(OUT, "gui_blend_panel.png"))
+    FreeCADGui.ActiveDocument.ActiveView.saveImage(os.path.join(OUT, "gui_blend_preview.png"),
+                                                   800, 600, "White")
+    result["blend_accepted"] = bpanel.accept()
     blend = doc2.getObject("C2Blend")
     result["blend_verdict"] = blend.Verdict if blend else None
+    result["blend_solid"] = [blend.MakeSolid, blend.Shape.ShapeType, blend.Shape.isValid(),
+                             len(blend.Shape.Faces)] if blend else None
+    # editing it (double click): C1 and the face only, through the same panel
+    FreeCADGui.ActiveDocument.setEdit(blend.Name)
+    bedit = blend.ViewObject.Proxy.panel
+    bedit.timer.stop()
+    result["blend_edit_values"] = [bedit.solid.isChecked(), bedit.cont.currentText()]
+    bedit.cont.setCurrentIndex(1)
+    bedit.solid.setChecked(False)
+    bedit.timer.stop()
+    result["blend_edit_accepted"] = bedit.accept()
+    result["blend_edited"] = [blend.MakeSolid, blend.Continuity, blend.Verdict,
+                              blend.Shape.ShapeType]
+    # back to C2 and one solid for the animation
+    blend.Continuity, blend.MakeSolid = "C2", True
+    doc2.recompute()
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(clock)
     FreeCADGui.Selection.addSelection(blend)
@@ -127,6 +171,17 @@ try:
     edit.timer.stop()
     result["c1_accepted"] = edit.accept()
     result["c1_object"] = [fillet.Continuity, fillet.Verdict, "Invalid" in fillet.State]
+    # a failed edit (a radius too large for the plate) says why and keeps the object
+    volume = fillet.Shape.Volume
+    QtGui.QMessageBox.critical = staticmethod(lambda parent, title, text: warnings.append(text))
+    edit = FilletPanel(obj=fillet)
+    edit.timer.stop()
+    edit.radius.setValue(50.0)
+    result["too_large_accepted"] = edit.accept()
+    FreeCADGui.Control.closeDialog()
+    result["too_large_message"] = warnings[-1]
+    result["too_large_kept"] = [fillet.Radius.Value, fillet.Shape.Volume == volume,
+                                "Invalid" in fillet.State]
     # all 12 edges of a box through the command and its panel, left at its defaults but
     # for the size, given as a setback:
     # 12 blends and 8 plate-filled corners (this froze FreeCAD in OCCT's BOP check at

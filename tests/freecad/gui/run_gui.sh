@@ -30,6 +30,14 @@ assert r["verdict"] == "G2" and r["valid"], r
 assert r["map_nodes"] == 1, r
 assert r["non_white_fraction"] > 0.05 and r["colours"] > 50, r
 assert r["blend_verdict"] == "G2", r
+assert r["blend_preview"].startswith("G2; ") and r["blend_preview"].endswith("the blend face only"), r
+assert r["blend_preview_drawn"], r
+assert r["blend_solid_preview"].startswith("G2; ") and r["blend_solid_preview"].endswith("one solid, valid"), r
+assert r["blend_accepted"] is True and r["blend_solid"][:3] == [True, "Solid", True], r
+assert r["blend_edit_values"] == [True, "C2"], r
+assert r["blend_edit_accepted"] is True and r["blend_edited"] == [False, "C1", "G1", "Face"], r
+assert not r["blend_panel_opened"], r
+assert r["stray_edge"] + ": the edge is not an edge of the selected face" in r["warnings"], r
 assert r["bad_selections_unchanged"], r
 assert "ShaftPlate.Face1: Face1 is not an edge; select only edges" in r["warnings"], r
 assert "ShaftPlate.Vertex1: Vertex1 is not an edge; select only edges" in r["warnings"], r
@@ -41,12 +49,15 @@ assert abs(r["slid_tension"] - 1.6) < 1e-6, r
 assert r["typed"] == [1.0, 286, -0.5, 0], r
 assert r["c1_parameters"] == [2.0, "C1", [2.5, 1.0, 1.0], 1.0], r
 assert r["c1_accepted"] is True and r["c1_object"] == ["C1", "G1", False], r
+assert r["too_large_accepted"] is False and r["too_large_kept"] == [2.0, True, False], r
+assert r["too_large_message"].startswith("C2Fillet: "), r
 assert r["box_parameters"] == [2.0, "C2", [1.0, 1.0, 1.0, 1.0], 1.0], r
 assert abs(r["box_radius"] - 2.0) < 1e-12, r
 assert r["box_blends"] == 12 and r["box_corners"] == 8 and r["box_valid"], r
 assert r["box_solid_check"] == "passes BRepCheck and the BOP check", r
 print("gui test: G2 fillet, curvature map shown, screenshot not blank; G2 blend faces; "
-      "10 PNG animation frames; the panel keeps exact values and makes a C1 fillet; a box's "
+      "its panel makes one solid and edits it; 10 PNG animation frames; the fillet panel keeps "
+      "exact values, makes a C1 fillet and keeps the fillet when an edit fails; a box's "
       "12 edges by setback, with 8 "
       "filled corners")
 PY

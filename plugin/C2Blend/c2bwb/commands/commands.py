@@ -8,7 +8,7 @@ import FreeCADGui
 from PySide import QtGui
 
 from ..errors import C2BlendError
-from ..objects import animate, make
+from ..objects import animate, features, make
 from ..viewproviders.viewproviders import ICONS, show_curvature_map
 
 NAMES = ["C2Blend_Fillet", "C2Blend_BlendFaces", "C2Blend_Check", "C2Blend_Animate"]
@@ -66,11 +66,13 @@ class Fillet(_Command):
 
 
 class BlendFaces(_Command):
-    """C2 Blend: blend face between (face, edge) picked on one object and on another."""
+    """C2 Blend faces: blend face between (face, edge) picked on one object and on
+    another, with a task panel (parameters, one solid or not)."""
 
     ICON, MENU = "C2Blend_BlendFaces.svg", "C2 Blend faces"
     TIP = ("G2 blend between an edge of a face and an edge of another face: pick face and "
            "edge on the first object, then on the second")
+    panel = None  # the open task panel (macros and tests drive it)
 
     def Activated(self):
         sides = []
@@ -87,9 +89,13 @@ class BlendFaces(_Command):
                                    for o, p in sides) or "nothing"
                 raise C2BlendError("pick a face and one of its edges on each of two sides "
                                    "(selected: %s)" % picked)
-            make.make_blend(sides[0], sides[1], make_solid=False)
+            features.blend_side(sides[0], "Edge1")
+            features.blend_side(sides[1], "Edge2")
         except C2BlendError as ex:
-            _fail("C2 Blend faces", ex)
+            return _fail("C2 Blend faces", ex)
+        from ..taskpanels.blendfaces_panel import BlendFacesPanel
+        BlendFaces.panel = BlendFacesPanel(*sides)
+        FreeCADGui.Control.showDialog(BlendFaces.panel)
 
 
 class Check(_Command):

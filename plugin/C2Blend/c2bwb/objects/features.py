@@ -123,31 +123,47 @@ class C2BlendFaces(_Proxy):
         _shape_props(obj)
         obj.Proxy = self
 
-    @staticmethod
-    def _side(link, which):
-        o, subs = link
-        faces = [s for s in subs if s.startswith("Face")]
-        edges = [s for s in subs if s.startswith("Edge")]
-        where = "%s.%s" % (o.Label, "+".join(subs))
-        if len(faces) != 1 or len(edges) != 1:
-            raise C2BlendError("%s needs one face and one of its edges, got %s"
-                               % (which, list(subs)), where)
-        return o.Shape.getElement(faces[0]), o.Shape.getElement(edges[0]), where
-
     def execute(self, obj):
-        self.update(obj, "C2 Blend", lambda: self.compute(obj))
+        self.update(obj, "C2 Blend", lambda: blend_faces(
+            obj.Edge1, obj.Edge2, *params(obj), make_solid=obj.MakeSolid))
 
-    def compute(self, obj):
-        f1, e1, w1 = self._side(obj.Edge1, "Edge1")
-        f2, e2, w2 = self._side(obj.Edge2, "Edge2")
-        cont, sp, tension = params(obj)
-        face, rep = blendfaces.blend(f1, e1, f2, e2, cont, sp, tension, names=(w1, w2))
-        shape = blendfaces.close_solid([f1, face, f2], "%s -> %s" % (w1, w2)) \
-            if obj.MakeSolid else face
-        for r in rep["trimlines"]:
-            r.setdefault("edge", r["trimline"])
-            r.setdefault("faces", [])
-        return shape, rep
+
+def blend_side(link, which):
+    """(face, edge, 'Label.FaceN+EdgeM') of one side of a blend, link = (object,
+    ['FaceN', 'EdgeM']). Raises C2BlendError naming the side (which) and the object."""
+    o, subs = link
+    subs = list(subs)
+    faces = [s for s in subs if s.startswith("Face")]
+    edges = [s for s in subs if s.startswith("Edge")]
+    where = "%s.%s" % (o.Label, "+".join(subs))
+    if len(faces) != 1 or len(edges) != 1 or len(subs) != 2:
+        raise C2BlendError("%s needs one face and one of its edges, got %s"
+                           % (which, subs), where)
+    n = {"Face": len(o.Shape.Faces), "Edge": len(o.Shape.Edges)}
+    for name in subs:
+        kind, k = name[:4], name[4:]
+        if not k.isdigit() or not 1 <= int(k) <= n[kind]:
+            raise C2BlendError("no such %s: %s (%s has %d %ss)"
+                               % (kind.lower(), name, o.Label, n[kind], kind.lower()), where)
+    face, edge = o.Shape.getElement(faces[0]), o.Shape.getElement(edges[0])
+    blendfaces.Trimline(face, edge, where)  # the edge is the face's and not degenerate
+    return face, edge, where
+
+
+def blend_faces(side1, side2, continuity, shape_params, tension, make_solid=False):
+    """(shape, report) of a C2BlendFaces object: the blend face from side1 to side2
+    (blend_side), or with make_solid one solid of the two faces, the blend and planar
+    caps. Raises C2BlendError naming the sides."""
+    f1, e1, w1 = blend_side(side1, "Edge1")
+    f2, e2, w2 = blend_side(side2, "Edge2")
+    face, rep = blendfaces.blend(f1, e1, f2, e2, continuity, shape_params, tension,
+                                 names=(w1, w2))
+    shape = blendfaces.close_solid([f1, face, f2], "%s -> %s" % (w1, w2)) \
+        if make_solid else face
+    for r in rep["trimlines"]:
+        r.setdefault("edge", r["trimline"])
+        r.setdefault("faces", [])
+    return shape, rep
 
 
 class C2Check(_Proxy):

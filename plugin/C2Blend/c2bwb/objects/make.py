@@ -39,8 +39,10 @@ def _add(doc, type_name, name, proxy_cls, setup):
     return obj
 
 
-def _set_params(obj, continuity, shape_params, tension):
-    """Store checked parameters (fillet.check_params) in obj (features.object_values)."""
+def set_params(obj, continuity, shape_params, tension):
+    """Store continuity, its shape parameters (as fillet.check_params returns them) and
+    tension in obj's properties (features.object_values). Raises ValueError for a C3
+    a4 of 0."""
     obj.Continuity = continuity
     obj.Gamma, obj.Eta, obj.Lambda, obj.Rho = features.object_values(continuity, shape_params)
     obj.Tension = float(tension)
@@ -69,7 +71,7 @@ def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
     def setup(obj):
         obj.Base = (base, list(edges))
         obj.Radius = float(radius)
-        _set_params(obj, continuity, sp, tension)
+        set_params(obj, continuity, sp, tension)
     obj = _add(base.Document, "Part::FeaturePython", "C2Fillet", features.C2Fillet, setup)
     if FreeCAD.GuiUp:
         base.ViewObject.Visibility = False
@@ -78,13 +80,18 @@ def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
 
 def make_blend(side1, side2, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0,
                make_solid=False):
-    """A C2BlendFaces object; side = (object, ['FaceN', 'EdgeM'])."""
+    """A C2BlendFaces object blending side1 to side2, each (object, ['FaceN', 'EdgeM']);
+    with make_solid its shape is one solid (features.blend_faces). The sides and
+    parameters are validated before the document is touched; any later failure aborts
+    the transaction, so the document is left as it was."""
     sp = _checked_params(1.0, continuity, shape_params, tension, side1[0].Label)
+    features.blend_side(side1, "Edge1")
+    features.blend_side(side2, "Edge2")
 
     def setup(obj):
         obj.Edge1, obj.Edge2 = side1, side2
         obj.MakeSolid = bool(make_solid)
-        _set_params(obj, continuity, sp, tension)
+        set_params(obj, continuity, sp, tension)
     return _add(side1[0].Document, "Part::FeaturePython", "C2Blend", features.C2BlendFaces,
                 setup)
 

@@ -27,10 +27,15 @@ class ViewProviderC2:
         return os.path.join(ICONS, "C2Blend_%s.svg" % name)
 
     def setEdit(self, vobj, mode=0):
-        if type(vobj.Object.Proxy).__name__ != "C2Fillet" or mode != 0:
+        kind = type(vobj.Object.Proxy).__name__
+        if kind not in ("C2Fillet", "C2BlendFaces") or mode != 0:
             return False
-        from ..taskpanels.fillet_panel import FilletPanel
-        FreeCADGui.Control.showDialog(FilletPanel(obj=vobj.Object))
+        if kind == "C2Fillet":
+            from ..taskpanels.fillet_panel import FilletPanel as Panel
+        else:
+            from ..taskpanels.blendfaces_panel import BlendFacesPanel as Panel
+        self.panel = Panel(obj=vobj.Object)  # macros and tests drive it
+        FreeCADGui.Control.showDialog(self.panel)
         return True
 
     def unsetEdit(self, vobj, mode=0):
