@@ -3,6 +3,7 @@
 #include <float.h>
 #include <lapacke.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -526,7 +527,7 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
     }
     static const double F6[6] = {0.07, 0.23, 0.41, 0.59, 0.77, 0.93};
     static const double F8[8] = {0.03, 0.16, 0.29, 0.44, 0.56, 0.71, 0.84, 0.97};
-    double tol = 0, bbox[6];
+    double tol = 0, bbox[6], trim_worst = 0; /* the end rows' worst relative residual */
     int done = 0;
     double *us = NULL, *vs = NULL, *eu = NULL, *ev = NULL;
     for (rep->iterations = 1; rep->iterations <= opt->max_iter && !st; rep->iterations++) {
@@ -590,6 +591,9 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
             break;
         }
         int nsplit = 0;
+        trim_worst = 0;
+        for (int k = 0; k < f.v.nb - 1; k++)
+            trim_worst = fmax(trim_worst, evt[k]);
         for (int k = 0; k < f.u.nb - 1; k++)
             nsplit += su[k] = eu[k] > 0.5 * tol;
         for (int k = 0; k < f.v.nb - 1; k++)
@@ -647,13 +651,27 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
     rep->npoles[0] = f.u.npoles;
     rep->npoles[1] = f.v.npoles;
     rep->seconds = now() - t0;
-    if (!st && !done)
-        st = c2b_error_set(err, C2B_ERR_NUMERIC,
-                           "fit: tolerance %.3g (%.3g x bounding-box diagonal %.6g) not reached: "
-                           "deviation %.3g with %d x %d poles after %d rounds (pole budget %d per "
-                           "direction)",
-                           tol, opt->tol_rel, rep->bbox_diagonal, rep->deviation, f.u.npoles,
-                           f.v.npoles, rep->iterations - 1, opt->max_poles);
+    if (!st && !done) {
+        char why[160];
+        if (f.u.npoles > opt->max_poles || f.v.npoles > opt->max_poles)
+            snprintf(why, sizeof why, "the next refinement needs %d x %d poles, over the budget "
+                     "of %d per direction", f.u.npoles, f.v.npoles, opt->max_poles);
+        else
+            snprintf(why, sizeof why, "%d refinement rounds (the limit) gave %d x %d poles",
+                     opt->max_iter, f.u.npoles, f.v.npoles);
+        if (rep->deviation > tol)
+            st = c2b_error_set(err, C2B_ERR_NUMERIC,
+                               "fit: tolerance %.3g (%.3g x bounding-box diagonal %.6g) not "
+                               "reached: deviation %.3g; %s",
+                               tol, opt->tol_rel, rep->bbox_diagonal, rep->deviation, why);
+        else
+            st = c2b_error_set(err, C2B_ERR_NUMERIC,
+                               "fit: the trimline rows (S, S_u, S_uu at u = 0 and 1) are within "
+                               "%.3g of their size, not the %.3g that exact contact needs (the "
+                               "surface is within %.3g, under the tolerance %.3g); %s",
+                               trim_worst, C2B_FIT_TRIM_FACTOR * opt->tol_rel,
+                               rep->deviation, tol, why);
+    }
     if (!st)
         st = make_surface(&f, out, err);
     fit_free(&f);

@@ -399,10 +399,50 @@ def slot_plate():
     return s, names
 
 
+def revolved_spline(k=1.0):
+    """A part of revolution, 25 high, whose side is a B-spline profile (radius 10 at the
+    bottom, 6 at the top), scaled by k. Returns (solid, names of its bottom and top rims:
+    circles between the B-spline side and the planar ends)."""
+    bs = Part.BSplineCurve()
+    bs.interpolate([V(10, 0, 0), V(12, 0, 5), V(8, 0, 12), V(9, 0, 18), V(6, 0, 25)])
+    w = Part.Wire([Part.LineSegment(V(0, 0, 0), V(10, 0, 0)).toShape(), bs.toShape(),
+                   Part.LineSegment(V(6, 0, 25), V(0, 0, 25)).toShape(),
+                   Part.LineSegment(V(0, 0, 25), V(0, 0, 0)).toShape()])
+    s = Part.Face(w).revolve(V(0, 0, 0), V(0, 0, 1), 360)
+    s.scale(k)
+    names = [circle_edge(s, 0.0), circle_edge(s, 25.0 * k)]
+    return s, ["Edge%d" % (i + 1) for i in names]
+
+
+def elliptic_boss():
+    """An elliptic boss (semi-axes 12 and 6, 10 high) on a 50 x 40 x 5 plate. Returns
+    (solid, name of the boss's top edge)."""
+    plate = Part.makeBox(50, 40, 5, V(-25, -20, -5))
+    boss = Part.Face(Part.Wire(Part.Ellipse(V(0, 0, 0), 12, 6).toShape())).extrude(V(0, 0, 10))
+    s = plate.fuse(boss).removeSplitter()
+    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                   if abs(e.BoundBox.ZMin - 10) < 1e-6 and abs(e.BoundBox.ZMax - 10) < 1e-6)
+
+
+def freeform_boss():
+    """A boss 8 high on a 50 x 40 x 5 plate, its outline a periodic cubic B-spline
+    through 12 points (smallest radius of curvature 1.075). Returns (solid, name of its
+    top edge)."""
+    pts = [V(12 * math.cos(t) * (1 + 0.15 * math.cos(3 * t)),
+             8 * math.sin(t) * (1 + 0.1 * math.sin(2 * t)), 0)
+           for t in [2 * math.pi * k / 12 for k in range(12)]]
+    c = Part.BSplineCurve()
+    c.interpolate(pts, PeriodicFlag=True)
+    boss = Part.Face(Part.Wire(c.toShape())).extrude(V(0, 0, 8))
+    s = Part.makeBox(50, 40, 5, V(-25, -20, -5)).fuse(boss).removeSplitter()
+    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                   if isinstance(e.Curve, Part.BSplineCurve) and abs(e.BoundBox.ZMin - 8) < 1e-6)
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):
-        if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z - z) < 1e-9:
+        if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Center.z - z) < 1e-9 * max(1.0, abs(z)):
             return i
     raise AssertionError("no circle at z = %g" % z)
 

@@ -1937,3 +1937,96 @@ def test_setback_errors_name_the_edges():
                        r"Part\.Edge\d+ but [0-9.]+ at Part\.Edge\d+, whose faces meet at "
                        r"another angle; a fillet has one radius"):
         C2Blend.radius_for_setback(s, names, 1.0, label="Part")
+
+
+@pytest.mark.parametrize("k", [1.0, 1e4])
+def test_verdict_does_not_depend_on_the_parts_size(k):
+    """The same fillets on a part and on the part scaled by 1e4: the blends' gaps at
+    the trimlines scale with the part (4.3e-10 at k = 1), so the g0 tolerance is at
+    least check.TOL_G0_REL of the diagonal. An absolute 1e-6 read "none" at k = 1e4."""
+    s, names = shapes.revolved_spline(k)
+    solid, rep = C2Blend.fillet_report(s, names, 1.5 * k, label="Rev")
+    assert_valid(solid)
+    assert rep["verdict"] == "G2" and len(rep["blends"]) == 2
+    g0 = max(t["g0"] for t in rep["trimlines"])
+    diag = solid.BoundBox.DiagonalLength
+    assert g0 < 1e-10 * diag
+    if k > 1:
+        assert g0 > ck.TOL_G0  # the absolute tolerance alone would fail it
+    assert C2Blend.check(solid, [t["edge"] for t in rep["trimlines"]])["verdict"] == "G2"
+
+
+def test_curvature_jump_is_relative_to_the_faces_curvature():
+    """A fillet of radius 0.025 on a 42-long part (the revolved B-spline part's rims):
+    its trimline on the top plane has a curvature jump of 2.6e-8 (1/mm), 1.1e-6 of
+    1/diagonal but 5e-10 of the blend's own curvature (about 2/R). The jump is measured
+    against the larger of the faces' curvatures (check.curvature_scale), so a small
+    fillet meets the same relative bound as a large one: G2, by the fillet's report and
+    by the check of its edges alike."""
+    s, names = shapes.revolved_spline()
+    solid, rep = C2Blend.fillet_report(s, names, 0.025, label="Rev")
+    assert_valid(solid)
+    diag = solid.BoundBox.DiagonalLength
+    assert rep["verdict"] == "G2" and not rep["kept_occt_faces"]
+    assert max(t["g2"] for t in rep["trimlines"]) * diag > ck.TOL_G2  # 1/diag: G1
+    for t in rep["trimlines"]:
+        if t["g2"] > 0:  # a blend's trimline: the scale is the blend's curvature
+            assert 1.0 / 0.025 < t["curvature_scale"] < 3.0 / 0.025
+    checked = C2Blend.check(solid, [t["edge"] for t in rep["trimlines"]])
+    assert checked["verdict"] == "G2"
+    # a plane's curvature scale is 0, a cylinder's 1/r
+    box = Part.makeBox(2, 2, 2)
+    assert ck.curvature_scale(box.Faces[0]) == 0.0
+    cyl = Part.makeCylinder(4, 3)
+    assert abs(ck.curvature_scale(cyl.Faces[0]) - 0.25) < 1e-12
+
+
+def test_occt_exceptions_become_messages():
+    """FreeCAD 0.20's Part exceptions carry a dict, whose repr reached the kept faces'
+    reasons ("{'sclassname': 'N4Part16BooleanExceptionE', 'sErrMsg': 'MultiFusion
+    failed', ...}"); its sErrMsg is the message."""
+    from c2bwb.errors import occt_message
+    ex = FreeCAD.Base.FreeCADError({"sclassname": "N4Part16BooleanExceptionE",
+                                    "sErrMsg": "MultiFusion failed", "sfile": "",
+                                    "iline": 0, "sfunction": "", "swhat": "", "btranslatable":
+                                    False, "breported": True})
+    assert occt_message(ex) == "MultiFusion failed"
+    assert occt_message(Part.OCCError("Failed to create face from wire")) == \
+        "Failed to create face from wire"
+    assert occt_message(ValueError()) == "ValueError"
+
+
+def test_ball_centre_stopping_is_named():
+    """The free-form boss's top outline at R = 1, about its outline's smallest radius of
+    curvature (1.075): the ball's centre curve has a cusp, where the contact's arc
+    length stands still. That was divided by (0/0, a NumPy warning), and the reason
+    given ended "did not converge near (nan, nan, nan)". OCCT's face is kept, and the
+    reason names the cusp and says what to do."""
+    s, edge = shapes.freeform_boss()
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Boss")
+    assert_valid(solid)
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    reason = rep["kept_occt_faces"][0]["reason"]
+    assert "the rolling ball's centre stops near (" in reason and "a smaller radius" in reason
+    assert "nan" not in reason
+
+
+def test_fit_failure_says_which_bound_was_missed():
+    """The elliptic boss's top edge at R = 2: the fit of its blend runs out of poles
+    with the surface within its tolerance but the trimline rows not within theirs. The
+    reason said "tolerance 2.69e-07 ... not reached: deviation 1.37e-07" (a deviation
+    under the tolerance) "with 30 x 408 poles ... (pole budget 400 per direction)". It
+    now says which bound was missed, by how much, and why the refinement stopped."""
+    s, edge = shapes.elliptic_boss()
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Boss")
+    assert_valid(solid)
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    reason = rep["kept_occt_faces"][0]["reason"]
+    m = re.search(r"the trimline rows \(S, S_u, S_uu at u = 0 and 1\) are within ([0-9.e+-]+) "
+                  r"of their size, not the ([0-9.e+-]+) that exact contact needs \(the surface "
+                  r"is within ([0-9.e+-]+), under the tolerance ([0-9.e+-]+)\); the next "
+                  r"refinement needs \d+ x (\d+) poles, over the budget of 400 per direction",
+                  reason)
+    assert m, reason
+    assert float(m.group(1)) > float(m.group(2)) and float(m.group(3)) < float(m.group(4))
+    assert int(m.group(5)) > 400

@@ -15,3 +15,14 @@ class C2BlendError(Exception):
         self.message = message
         self.where = where
         self.kind = kind
+
+
+def occt_message(ex):
+    """The message of an exception from FreeCAD or OCCT, for a user: FreeCAD 0.20's
+    Part exceptions carry a dict ({'sclassname': ..., 'sErrMsg': 'MultiFusion failed',
+    ...}) whose repr is no message; its sErrMsg is taken, and an empty message is
+    replaced by the exception's class name."""
+    arg = ex.args[0] if ex.args else None
+    if isinstance(arg, dict):
+        return str(arg.get("sErrMsg") or arg.get("sclassname") or type(ex).__name__)
+    return str(ex) or type(ex).__name__

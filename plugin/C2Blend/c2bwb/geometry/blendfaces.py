@@ -11,7 +11,7 @@ import time
 
 import Part
 
-from ..errors import C2BlendError
+from ..errors import C2BlendError, occt_message
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .fillet import DATA_REL, check_params
@@ -139,7 +139,8 @@ def close_solid(faces, where):
         try:
             caps.append(Part.Face(wire))
         except Exception as ex:
-            raise C2BlendError("cannot cap a free boundary of %d edges (%s)" % (len(w), ex),
+            raise C2BlendError("cannot cap a free boundary of %d edges (%s)"
+                               % (len(w), occt_message(ex)),
                                where, "sewing") from None
     sewn = Part.Compound(list(shell.Faces) + caps)
     sewn.sewShape()

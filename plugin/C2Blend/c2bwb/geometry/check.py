@@ -6,9 +6,15 @@ surfaces. At each point:
   g0 = distance between the two projections (model units);
   g1 = angle between the oriented normals (rad);
   g2 = |kA - kB|, the jump of the normal curvature in the direction across the edge
-       (1/model units), and g2_rel = g2 / max(|kA|, |kB|, 1/diagonal);
+       (1/model units), and g2_rel = g2 / max(|kA|, |kB|, k_scale), where k_scale is
+       the largest |principal curvature| of either face (curvature_scale) and at least
+       1/diagonal: a fillet's curvature jump is measured against its own curvature,
+       whatever its size (a fillet of radius 0.025 and one of 2 on the same part meet
+       the same relative bound);
   dk = the largest jump of k1, k2 (principal curvatures) and of H.
 Verdicts: G2 when g0 <= tol_g0, g1 <= tol_g1 and g2_rel <= tol_g2; G1 and G0 likewise.
+tol_g0 is at least TOL_G0_REL of the shape's diagonal, so that a part's size does not
+change its verdict (double precision holds positions to about 1e-16 of their size).
 This works on any shape, including OCCT's own fillets (G1: their curvature jumps by 1/R
 across the contact edges).
 """
@@ -17,9 +23,10 @@ import math
 import Part
 
 from ..errors import C2BlendError
-from .surface import Frame, frame_at_point, angle
+from .surface import Frame, frame_at_point, frame_or_none, angle
 
 TOL_G0 = 1e-6     # model units, and at least the edge tolerance
+TOL_G0_REL = 1e-10  # of the diagonal: the g0 tolerance of large parts
 TOL_G1 = 1e-8     # rad
 TOL_G2 = 1e-6     # relative curvature jump
 
@@ -72,13 +79,34 @@ def sample_params(edge, n):
     return [a + (b - a) * (k + 0.5) / n for k in range(n)]
 
 
+SCALE_GRID = 9  # points per direction where curvature_scale looks
+
+
+def curvature_scale(face):
+    """The largest |principal curvature| (1/model units) of face at SCALE_GRID x
+    SCALE_GRID points inside its parameter range (0 on a plane; degenerate points are
+    skipped): the scale of its curvature jumps (g2_rel)."""
+    u0, u1, v0, v1 = face.ParameterRange
+    k = 0.0
+    for i in range(SCALE_GRID):
+        for j in range(SCALE_GRID):
+            fr = frame_or_none(face, u0 + (u1 - u0) * (i + 0.5) / SCALE_GRID,
+                               v0 + (v1 - v0) * (j + 0.5) / SCALE_GRID)
+            if fr is not None:
+                k1, k2 = fr.principal()[:2]
+                k = max(k, abs(k1), abs(k2))
+    return k
+
+
 def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
     """Continuity between faces fa and fb at (point, tangent, uv) triples on their
     common boundary, in order along it, uv being the point's parameters on fa or None
     (then it is projected, starting from the previous point's parameters): worst g0, g1,
-    g2, g2_rel, dk and a verdict (see the module doc).
+    g2, g2_rel, dk and a verdict (see the module doc; diag is the shape's diagonal).
     oriented=False compares faces that are not yet in one shell: their normals may be
     opposite, so fb's normal is flipped where it faces away from fa's."""
+    tol_g0 = max(tol_g0, TOL_G0_REL * diag)
+    k_scale = max(1.0 / diag, curvature_scale(fa), curvature_scale(fb))
     worst = {"g0": 0.0, "g1": 0.0, "g2": 0.0, "g2_rel": 0.0, "dk": 0.0}
     ka_max = kb_max = 0.0
     ga = gb = None  # each projection starts from the previous point's (points are in order)
@@ -98,7 +126,7 @@ def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
             ka, kb = a.normal_curvature(d), b.normal_curvature(db)
             pa, pb = a.principal(), b.principal()
             g2 = abs(ka - kb)
-            g2_rel = g2 / max(abs(ka), abs(kb), 1.0 / diag)
+            g2_rel = g2 / max(abs(ka), abs(kb), k_scale)
         worst["g0"] = max(worst["g0"], (a.p - b.p).Length)
         worst["g1"] = max(worst["g1"], angle(a.n, b.n))
         worst["g2"] = max(worst["g2"], g2)
@@ -114,7 +142,7 @@ def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
     else:
         verdict = "G2"
     worst.update({"samples": len(points), "verdict": verdict,
-                  "cross_curvature": (ka_max, kb_max),
+                  "cross_curvature": (ka_max, kb_max), "curvature_scale": k_scale,
                   "tolerances": {"g0": tol_g0, "g1": TOL_G1, "g2_rel": TOL_G2}})
     return worst
 

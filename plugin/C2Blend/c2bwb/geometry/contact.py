@@ -289,6 +289,12 @@ class Contact:
         lengths = [q[1] for q in piece.nodes]
         j = min(max(bisect.bisect_right(lengths, s) - 1, 0), len(lengths) - 2)
         (a0, l0), (a1, l1) = piece.nodes[j], piece.nodes[j + 1]
+        if not l1 > l0:  # the centre stands still from a0 to a1: a cusp of its curve
+            c = self.solve(k, a0)[2]
+            raise ContactError("the rolling ball's centre stops near (%.6g, %.6g, %.6g): the "
+                               "radius is about a face's curvature radius there, where its "
+                               "offset has a cusp; a smaller radius avoids it"
+                               % (c.x, c.y, c.z))
         a = a0 + (a1 - a0) * (s - l0) / (l1 - l0)
         known, length, v_known = a0, l0, None  # a parameter whose arc length is known
         for _ in range(MAX_NEWTON):

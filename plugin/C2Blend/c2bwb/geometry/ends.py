@@ -20,6 +20,7 @@ Each end of an open fillet chain is one of:
 import numpy as np
 import Part
 
+from ..errors import occt_message
 from .surface import angle, frame_at_point, off_surface
 
 EXTEND = 1.0  # radii traced past a trimmed end
@@ -243,7 +244,7 @@ def trim(blends, original_face):
             pieces = b.full_face.generalFuse(cuts[id(b)])[0].Faces
         except Exception as ex:  # OCCT's general fuse failed on this blend
             failed.append((b, "cutting its blend along the curves at its ends failed (%s)"
-                           % (str(ex) or type(ex).__name__)))
+                           % occt_message(ex)))
             continue
         tol = CUT_TOL * b.surface_diag
         keep = [p for p in pieces if p.distToShape(Part.Vertex(b.probe))[0] <= tol]

@@ -32,7 +32,7 @@ import time
 
 import Part
 
-from ..errors import C2BlendError
+from ..errors import C2BlendError, occt_message
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .contact import Contact, ContactError
@@ -684,7 +684,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True):
         except Exception as ex:
             raise Unassembled(t.owners, "face %s of the original solid cannot be cut along "
                               "its blend (%s)" % (ck.element_name(shape, t.orig, "Face"),
-                                                  str(ex) or type(ex).__name__)) from None
+                                                  occt_message(ex))) from None
         faces_out += pieces
     for f in result.Faces:
         if any(f.isSame(d) for d in drop):
@@ -980,7 +980,7 @@ def _rolling_ball(shape, edges, radius):
     try:
         result = shape.makeFillet(radius, edges)
     except Exception as ex:
-        return None, str(ex) or type(ex).__name__
+        return None, occt_message(ex)
     if result.isNull() or not result.isValid():
         return None, "the result is not a valid solid"
     return result, None
