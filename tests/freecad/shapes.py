@@ -439,6 +439,21 @@ def freeform_boss():
                    if isinstance(e.Curve, Part.BSplineCurve) and abs(e.BoundBox.ZMin - 8) < 1e-6)
 
 
+def wavy_top_block():
+    """A 40 x 30 x 20 block whose top is cut by a cubic B-spline surface interpolated
+    over a 5 mm grid from x = -5 to 45, z = 15 + 2 sin(x / 6): its knot lines run every
+    5 mm in x, two of them on the block's sides x = 0 and x = 40. Returns (solid, name of
+    the top's front edge, at y = 0)."""
+    pts = [[V(x, y, 15 + 2 * math.sin(x / 6.0)) for y in range(-5, 36, 5)]
+           for x in range(-5, 46, 5)]
+    top = Part.BSplineSurface()
+    top.interpolate(pts)
+    s = Part.makeBox(40, 30, 20).cut(top.toShape().extrude(V(0, 0, 20))).removeSplitter()
+    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                   if abs(e.BoundBox.YMax) < 1e-6 and e.BoundBox.ZMin > 10
+                   and e.BoundBox.XLength > 30)
+
+
 def circle_edge(shape, z):
     """Index (0-based) of the circular edge of shape at height z."""
     for i, e in enumerate(shape.Edges):

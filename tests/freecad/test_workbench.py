@@ -2030,3 +2030,27 @@ def test_fit_failure_says_which_bound_was_missed():
     assert m, reason
     assert float(m.group(1)) > float(m.group(2)) and float(m.group(3)) < float(m.group(4))
     assert int(m.group(5)) > 400
+
+
+def test_end_faces_belong_to_the_runs_outer_ends():
+    """The wavy-top block's front top edge, R = 1.5: its contact crosses the top's knot
+    lines, so the chain is cut into runs there, and the top's knot lines on the block's
+    sides leave a short run at each end, shorter than OCCT's end edge is long. Each of
+    the chain's end edges and faces belongs to the outer end of the first or last run,
+    never to its junction: by distance alone the short run's junction was nearer, and
+    its blend's junction section was then measured against the end face ("leaves the
+    end face by 4.1e-01")."""
+    from c2bwb.geometry import ends, knots
+    s, edge = shapes.wavy_top_block()
+    result = s.makeFillet(1.5, [s.getElement(edge)])
+    faces = rb.new_faces(s, result)
+    chain, = rb.chains([rb.RollingBallFace(result, f, faces) for f in faces])[0]
+    runs = knots.split_at_knots(chain, 1.5)
+    assert runs is not None and len(runs) > 3
+    with_faces = []
+    for k, run in enumerate(runs):
+        for end in ends.chain_ends(run, faces):
+            if end.faces:
+                assert not end.junction, (k, end.at)
+                with_faces.append((k, end.at))
+    assert with_faces == [(0, 0), (len(runs) - 1, 1)]

@@ -63,17 +63,22 @@ def chain_ends(chain, fillet_faces):
         return []
     out = [ChainEnd(0, chain.junctions[0]), ChainEnd(1, chain.junctions[1])]
     guide = [_guide(chain, at) for at in (0, 1)]
-    for edge, nb in chain.ends:
+
+    def nearest(edge):  # the end an end edge belongs to: never a junction
+        if out[0].junction != out[1].junction:  # a run with one of the chain's ends
+            return out[1] if out[0].junction else out[0]
         d = [edge.distToShape(Part.Vertex(m))[0] for m, _ in guide]
-        end = out[0 if d[0] <= d[1] else 1]
+        return out[0 if d[0] <= d[1] else 1]
+
+    for edge, nb in chain.ends:
+        end = nearest(edge)
         end.edges.append((edge, nb))
         if not any(nb.isSame(f) for f in end.faces):
             end.faces.append(nb)
             if any(nb.isSame(f) for f in fillet_faces):
                 end.fillets.append(nb)
     for edge, _ in chain.corners:
-        d = [edge.distToShape(Part.Vertex(m))[0] for m, _ in guide]
-        out[0 if d[0] <= d[1] else 1].corner = True
+        nearest(edge).corner = True
     for end in out:
         m, t = guide[end.at]
         if end.corner and not end.faces:
