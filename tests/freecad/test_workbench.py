@@ -2054,3 +2054,23 @@ def test_end_faces_belong_to_the_runs_outer_ends():
                 assert not end.junction, (k, end.at)
                 with_faces.append((k, end.at))
     assert with_faces == [(0, 0), (len(runs) - 1, 1)]
+
+
+def test_mitre_of_a_narrow_and_a_wide_fillet_either_way_round():
+    """A wedge whose ridge is a 2-wide face: its long ridge edge and the end edge at
+    either end, R = 0.8, meet at a mitre. The end edge's fillet is the narrower there,
+    so the mitre curve leaves its width before crossing the ridge fillet's: marched
+    across the end edge's blend (as the blends' order made it at x = 0) it ran off the
+    ridge blend, 0.36 off its surface, and both fillets were kept as OCCT's (G1), while
+    the mirror image at x = 20 was G2. Both ends now give G2 and mirror-equal solids."""
+    s = Part.makeWedge(0, 0, 0, 4, 0, 20, 10, 20, 6, 20)
+    out = []
+    for end in ("Edge3", "Edge7"):  # at x = 0 and x = 20
+        solid, rep = C2Blend.fillet_report(s, [end, "Edge11"], 0.8, label="Wedge")
+        assert_valid(solid)
+        assert rep["verdict"] == "G2" and len(rep["blends"]) == 2, rep["kept_occt_faces"]
+        assert not rep["kept_occt_faces"]
+        out.append(solid)
+    mirrored = out[0].mirror(FreeCAD.Vector(10, 0, 0), FreeCAD.Vector(1, 0, 0))
+    assert abs(mirrored.Volume - out[1].Volume) < 1e-9 * out[1].Volume
+    assert mirrored.common(out[1]).Volume == pytest.approx(out[1].Volume, rel=1e-7)

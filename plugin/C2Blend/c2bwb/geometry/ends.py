@@ -199,6 +199,27 @@ def _touch(b, partner):
     return None
 
 
+def _mitre_cut(b, partner, near, tol):
+    """(edge, off) of cut_edge where blends b and partner meet at a mitre (near: OCCT's
+    edges where b's fillet met the partner's). It marches across b; where the mitre
+    curve leaves the partner's width before crossing b's (the narrower of two fillets
+    meeting at a vertex, as at a wedge's ridge end), that march runs off the partner
+    and the curve is off its surface: it then marches across the partner instead, from
+    OCCT's edges where the partner met b."""
+    edge, off = cut_edge(b.surface, b.surface_diag, partner.full_face, near,
+                         _touch(b, partner))
+    if off <= tol:
+        return edge, off
+    back = [x for e in partner.ends for g in e.faces if _blend_of(g, [b]) == 0
+            for x in e.edges_on(g)]
+    try:
+        other = cut_edge(partner.surface, partner.surface_diag, b.full_face, back,
+                         _touch(partner, b))
+    except ValueError:
+        return edge, off
+    return min((edge, off), other, key=lambda c: c[1])
+
+
 def trim(blends, original_face):
     """Cut every blend with a trimmed end back: each extended face (b.full_face) is cut
     along its section with the tools of its trimmed ends (the end faces' surfaces, via
@@ -229,8 +250,7 @@ def trim(blends, original_face):
                         edge, off = cut_edge(b.surface, b.surface_diag,
                                              _tool(original_face(f)), e.edges_on(f))
                     else:
-                        edge, off = cut_edge(b.surface, b.surface_diag, partner.full_face,
-                                             e.edges_on(f), _touch(b, partner))
+                        edge, off = _mitre_cut(b, partner, e.edges_on(f), tol)
                     if off > tol:
                         raise ValueError("its cut curve is %.1e off the surfaces" % off)
                 except ValueError as ex:
