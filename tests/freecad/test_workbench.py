@@ -2074,3 +2074,28 @@ def test_mitre_of_a_narrow_and_a_wide_fillet_either_way_round():
     mirrored = out[0].mirror(FreeCAD.Vector(10, 0, 0), FreeCAD.Vector(1, 0, 0))
     assert abs(mirrored.Volume - out[1].Volume) < 1e-9 * out[1].Volume
     assert mirrored.common(out[1]).Volume == pytest.approx(out[1].Volume, rel=1e-7)
+
+
+def test_mitres_around_a_narrow_face():
+    """The same wedge's four ridge edges, R = 0.8: four mitres around the 2 x 20 ridge
+    face. Newton's method for the cut curve across a short end edge's blend did not
+    converge, and all four were kept as OCCT's (G1). Marched across the other blend of
+    each mitre where one way fails, all four are G2, the ridge face a rectangle shrunk
+    by the fillets' setbacks on each side."""
+    s = Part.makeWedge(0, 0, 0, 4, 0, 20, 10, 20, 6, 20)
+    ridge = [n for n in ("Edge%d" % (i + 1) for i in range(len(s.Edges)))
+             if abs(s.getElement(n).BoundBox.YMin - 10) < 1e-9
+             and abs(s.getElement(n).BoundBox.YMax - 10) < 1e-9]
+    assert len(ridge) == 4
+    solid, rep = C2Blend.fillet_report(s, ridge, 0.8, label="Wedge")
+    assert_valid(solid)
+    assert rep["verdict"] == "G2" and len(rep["blends"]) == 4 and not rep["kept_occt_faces"]
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    top = [f for f in solid.Faces if f.Surface.isPlanar()
+           and abs(f.normalAt(0, 0).y - 1.0) < 1e-12]
+    assert len(top) == 1
+    # OCCT's own fillet leaves the same flat rectangle (the trimlines are the ball's)
+    occt = s.makeFillet(0.8, [s.getElement(n) for n in ridge])
+    occt_top = [f for f in occt.Faces if f.Surface.isPlanar()
+                and abs(f.normalAt(0, 0).y - 1.0) < 1e-12]
+    assert top[0].Area == pytest.approx(occt_top[0].Area, rel=1e-9)

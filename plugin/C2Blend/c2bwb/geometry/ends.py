@@ -204,20 +204,26 @@ def _mitre_cut(b, partner, near, tol):
     edges where b's fillet met the partner's). It marches across b; where the mitre
     curve leaves the partner's width before crossing b's (the narrower of two fillets
     meeting at a vertex, as at a wedge's ridge end), that march runs off the partner
-    and the curve is off its surface: it then marches across the partner instead, from
-    OCCT's edges where the partner met b."""
-    edge, off = cut_edge(b.surface, b.surface_diag, partner.full_face, near,
+    and the curve is off its surface (or Newton's method fails): it then marches across
+    the partner instead, from OCCT's edges where the partner met b. Raises ValueError
+    when neither way gives a curve."""
+    try:
+        first = cut_edge(b.surface, b.surface_diag, partner.full_face, near,
                          _touch(b, partner))
-    if off <= tol:
-        return edge, off
+    except ValueError as ex:
+        first, why = None, ex
+    if first is not None and first[1] <= tol:
+        return first
     back = [x for e in partner.ends for g in e.faces if _blend_of(g, [b]) == 0
             for x in e.edges_on(g)]
     try:
         other = cut_edge(partner.surface, partner.surface_diag, b.full_face, back,
                          _touch(partner, b))
     except ValueError:
-        return edge, off
-    return min((edge, off), other, key=lambda c: c[1])
+        if first is None:
+            raise why from None
+        return first
+    return other if first is None else min(first, other, key=lambda c: c[1])
 
 
 def trim(blends, original_face):
