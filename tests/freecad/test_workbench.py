@@ -566,16 +566,21 @@ def test_end_face_that_cannot_grow_keeps_occt_face(monkeypatch):
 
 def test_uncut_mitre_keeps_both_fillets(monkeypatch):
     """When a blend's extension cannot be cut back (here: an injected failure of the
-    cut curve for the box's front top edge), OCCT's face is kept for it, and so is the
-    face of every fillet that meets it in a mitre, down the chain: all four top edges
-    here. The solid is still valid and the verdict G1, never G2."""
+    cut curves of the box's front top edge, marched across it or across its partner),
+    OCCT's face is kept for it, and so is the face of every fillet that meets it in a
+    mitre, down the chain: all four top edges here. The solid is still valid and the
+    verdict G1, never G2."""
     from c2bwb.geometry import ends
     real = ends.cut_edge
 
-    def failing(surface, *args):
-        if surface.value(0.5, sum(surface.bounds()[2:4]) / 2).y < 1.0:  # the y = 0 edge
+    def front(s):  # the y = 0 edge's blend
+        return isinstance(s, Part.BSplineSurface) and \
+            s.value(0.5, sum(s.bounds()[2:4]) / 2).y < 1.0
+
+    def failing(surface, scale, tool, *args):
+        if front(surface) or front(tool.Surface):
             raise ValueError("injected")
-        return real(surface, *args)
+        return real(surface, scale, tool, *args)
 
     monkeypatch.setattr(ends, "cut_edge", failing)
     box = shapes.box()

@@ -228,7 +228,10 @@ class FilletChain:
                     return ("OCCT split its fillet at an angle to the fillet's cross-section "
                             "where it meets the next face of its chain")
                 if a is None or b is None:
-                    return "it meets another fillet inside its range (a corner patch)"
+                    return ("OCCT's faces of this fillet meet along an edge inside one "
+                            "face's range, not at a cross-section's end (another fillet "
+                            "meets it there, or OCCT's fillet is irregular: see the solid "
+                            "check)")
                 ends[(id(m), a)] = (o, b)
         start = self.members[0]
         a_in = start.range[0]
