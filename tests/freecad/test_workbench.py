@@ -2016,12 +2016,25 @@ def test_ball_centre_stopping_is_named():
     assert "nan" not in reason
 
 
-def test_fit_failure_says_which_bound_was_missed():
-    """The elliptic boss's top edge at R = 2: the fit of its blend runs out of poles
-    with the surface within its tolerance but the trimline rows not within theirs. The
-    reason said "tolerance 2.69e-07 ... not reached: deviation 1.37e-07" (a deviation
-    under the tolerance) "with 30 x 408 poles ... (pole budget 400 per direction)". It
-    now says which bound was missed, by how much, and why the refinement stopped."""
+def test_elliptic_boss_top_needs_more_poles():
+    """The elliptic boss's top edge at R = 2: its blend's fit needs 599 poles along the
+    edge, over the kernel's default budget of 400 (bspline.MAX_POLES is 1000)."""
+    s, edge = shapes.elliptic_boss()
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Boss")
+    assert_valid(solid)
+    assert rep["verdict"] == "G2" and len(rep["blends"]) == 1
+    assert 400 < rep["blends"][0]["poles"][1] <= 1000
+
+
+def test_fit_failure_says_which_bound_was_missed(monkeypatch):
+    """The elliptic boss's top edge at R = 2 with a budget of 400 poles: the fit of its
+    blend runs out of poles with the surface within its tolerance but the trimline rows
+    not within theirs. The reason said "tolerance 2.69e-07 ... not reached: deviation
+    1.37e-07" (a deviation under the tolerance) "with 30 x 408 poles ... (pole budget
+    400 per direction)". It now says which bound was missed, by how much, and why the
+    refinement stopped."""
+    from c2bwb.geometry import bspline
+    monkeypatch.setattr(bspline, "MAX_POLES", 400)
     s, edge = shapes.elliptic_boss()
     solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Boss")
     assert_valid(solid)

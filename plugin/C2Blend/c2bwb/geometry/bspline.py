@@ -24,10 +24,16 @@ def solve(spec, where):
     return _kernel(lambda: c2blend.Blend(spec), where)
 
 
+# Poles per direction the fit may use (the kernel's default is 400). An elliptic boss's
+# top edge (12 x 6, R = 2) needs 30 x 599: with 400 its trimline rows stopped at 1.3e-10
+# of the 1e-10 their contact needs, and OCCT's G1 face was kept.
+MAX_POLES = 1000
+
+
 def fit_surface(blend, tol_rel, where):
-    """Fit blend at tol_rel (relative to its bounding-box diagonal); returns
-    (Part.BSplineSurface, fit dict)."""
-    fit = _kernel(lambda: blend.fit(tol=tol_rel), where)
+    """Fit blend at tol_rel (relative to its bounding-box diagonal), with at most
+    MAX_POLES poles per direction; returns (Part.BSplineSurface, fit dict)."""
+    fit = _kernel(lambda: blend.fit(tol=tol_rel, max_poles=MAX_POLES), where)
     surf = Part.BSplineSurface()
     surf.buildFromPolesMultsKnots(fit["poles"].tolist(), fit["umults"], fit["vmults"],
                                   fit["uknots"], fit["vknots"], fit["uperiodic"],
