@@ -86,6 +86,8 @@ def curvature_scale(face):
     """The largest |principal curvature| (1/model units) of face at SCALE_GRID x
     SCALE_GRID points inside its parameter range (0 on a plane; degenerate points are
     skipped): the scale of its curvature jumps (g2_rel)."""
+    if face.Surface.isPlanar():
+        return 0.0
     u0, u1, v0, v1 = face.ParameterRange
     k = 0.0
     for i in range(SCALE_GRID):
