@@ -100,15 +100,27 @@ def curvature_scale(face):
     return k
 
 
-def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True):
+def _scale(face, scales):
+    """curvature_scale(face), kept in the dict scales (None: not kept) by the face's
+    hash, so that a report over many edges samples each face once."""
+    if scales is None:
+        return curvature_scale(face)
+    key = face.hashCode()
+    if key not in scales:
+        scales[key] = curvature_scale(face)
+    return scales[key]
+
+
+def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True, scales=None):
     """Continuity between faces fa and fb at (point, tangent, uv) triples on their
     common boundary, in order along it, uv being the point's parameters on fa or None
     (then it is projected, starting from the previous point's parameters): worst g0, g1,
     g2, g2_rel, dk and a verdict (see the module doc; diag is the shape's diagonal).
     oriented=False compares faces that are not yet in one shell: their normals may be
-    opposite, so fb's normal is flipped where it faces away from fa's."""
+    opposite, so fb's normal is flipped where it faces away from fa's. scales: a dict
+    shared by the comparisons of one report, where each face's curvature scale is kept."""
     tol_g0 = max(tol_g0, TOL_G0_REL * diag)
-    k_scale = max(1.0 / diag, curvature_scale(fa), curvature_scale(fb))
+    k_scale = max(1.0 / diag, _scale(fa, scales), _scale(fb, scales))
     worst = {"g0": 0.0, "g1": 0.0, "g2": 0.0, "g2_rel": 0.0, "dk": 0.0}
     ka_max = kb_max = 0.0
     ga = gb = None  # each projection starts from the previous point's (points are in order)
@@ -160,8 +172,9 @@ def trimline_points(surface, side, n=101, v_range=None):
     return out
 
 
-def check_edge(shape, edge, samples=101, diagonal=None):
-    """Continuity report (dict) for one edge shared by two faces of `shape`.
+def check_edge(shape, edge, samples=101, diagonal=None, scales=None):
+    """Continuity report (dict) for one edge shared by two faces of `shape` (scales: see
+    compare).
 
     Raises ValueError when the edge does not have exactly two faces.
     """
@@ -170,7 +183,7 @@ def check_edge(shape, edge, samples=101, diagonal=None):
         raise ValueError("the edge has %d adjacent faces, continuity needs 2" % len(faces))
     points = [(edge.valueAt(t), edge.tangentAt(t), None) for t in sample_params(edge, samples)]
     return compare(faces[0], faces[1], points, diagonal or shape.BoundBox.DiagonalLength,
-                   max(TOL_G0, edge.Tolerance))
+                   max(TOL_G0, edge.Tolerance), scales=scales)
 
 
 def element_name(shape, sub, kind):
@@ -205,8 +218,9 @@ def check(shape, edges, samples=101, label="Shape"):
                                "%s.%s" % (label, name))
     out = []
     diag = shape.BoundBox.DiagonalLength
+    scales = {}
     for name, edge in named:
-        rep = check_edge(shape, edge, samples, diag)
+        rep = check_edge(shape, edge, samples, diag, scales)
         rep["edge"] = name
         rep["faces"] = [element_name(shape, f, "Face") for f in edge_faces(shape, edge)]
         out.append(rep)

@@ -74,6 +74,7 @@ def fill(shell, edges, degrees=MAX_DEGREES):
             names.append((holder, "Edge%d" % (k + 1)))
             faces.append("Face%d" % (j + 1))
         best = None  # (worst seam angle, face, degree)
+        scales = {}  # the shell faces' curvature scales, shared by the degrees tried
         for degree in degrees:
             filling = doc.addObject("Surface::Filling", "Fill")
             for key, value in FILL.items():
@@ -87,7 +88,7 @@ def fill(shell, edges, degrees=MAX_DEGREES):
             if result.isNull() or len(result.Faces) != 1 or not result.isValid():
                 continue
             face = result.Faces[0].copy()
-            turn = _seam_angle(face, shell, edges)
+            turn = _seam_angle(face, shell, edges, scales)
             if best is None or turn < best[0]:
                 best = (turn, face, degree)
             if turn <= GOOD_G1:
@@ -119,15 +120,15 @@ def _in_order(edges):
     return out
 
 
-def _seam_angle(face, shell, edges):
+def _seam_angle(face, shell, edges, scales=None):
     """The largest angle (rad) between the normals of a filling `face` and of the
-    shell's faces along `edges`, at SEAM_POINTS per edge."""
+    shell's faces along `edges`, at SEAM_POINTS per edge (scales: check.compare's)."""
     diag = shell.BoundBox.DiagonalLength
     worst = 0.0
     for e in edges:
         pts = [(e.valueAt(t), e.tangentAt(t), None)
                for t in ck.sample_params(e, SEAM_POINTS)]
         r = ck.compare(face, shell.ancestorsOfType(e, Part.Face)[0], pts, diag,
-                       oriented=False)
+                       oriented=False, scales=scales)
         worst = max(worst, r["g1"])
     return worst

@@ -838,12 +838,12 @@ def _fillable(patch, blended):
     return all(any(b.source is c for b in blended) for c in patch.chains)
 
 
-def _corner_check(solid, patch):
+def _corner_check(solid, patch, scales):
     """The continuity between the filling at a corner patch and the faces around it
     (check.check_edge along each of its edges): the worst of each measure, with the
-    verdict by the report's criteria."""
+    verdict by the report's criteria (scales: check.compare's)."""
     face = _patch_face(solid, patch)
-    rs = [ck.check_edge(solid, e) for e in face.Edges if not e.Degenerated]
+    rs = [ck.check_edge(solid, e, scales=scales) for e in face.Edges if not e.Degenerated]
     return {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
             "edges": len(rs), "g0": max(r["g0"] for r in rs),
             "g1": max(r["g1"] for r in rs), "g2_rel": max(r["g2_rel"] for r in rs),
@@ -912,10 +912,11 @@ def _where(label, names, chains_):
     return {k: ", ".join(v) for k, v in out.items()}
 
 
-def _trimline_checks(solid, faces):
+def _trimline_checks(solid, faces, scales):
     """Continuity of the solid across both trimlines of each blend face, at 101 points
     per trimline, evaluated on the blend at known parameters and projected onto the
-    neighbouring face of the solid. faces: [(Blended, its face in solid)]."""
+    neighbouring face of the solid. faces: [(Blended, its face in solid)]; scales:
+    check.compare's."""
     out = []
     diag = solid.BoundBox.DiagonalLength
     for b, face in faces:
@@ -927,7 +928,7 @@ def _trimline_checks(solid, faces):
             if not nbrs:
                 raise C2BlendError("the blend face is not joined to a face along u = %g"
                                    % side, b.where, "sewing")
-            r = ck.compare(face, nbrs[0], pts, diag)
+            r = ck.compare(face, nbrs[0], pts, diag, scales=scales)
             r["edge"] = ck.element_name(solid, _edge_near(face, probe), "Edge")
             r["faces"] = [ck.element_name(solid, face, "Face"),
                           ck.element_name(solid, nbrs[0], "Face")]
@@ -937,12 +938,12 @@ def _trimline_checks(solid, faces):
     return out
 
 
-def _shared_edge_checks(solid, faces, junctions):
+def _shared_edge_checks(solid, faces, junctions, scales):
     """Continuity across the edges where two blends meet: at an angle (mitres, junctions
     False), creases by construction, as where OCCT's fillets meet there; or where two
     runs of one chain meet (junctions True), G1 as the side faces are there. Reported,
     not counted in the verdict, which is about the trimlines. faces: [(Blended, its
-    face in solid)]."""
+    face in solid)]; scales: check.compare's."""
     out = []
     for i, (b, f) in enumerate(faces):
         for o, g in faces[i + 1:]:
@@ -950,7 +951,7 @@ def _shared_edge_checks(solid, faces, junctions):
                 continue
             for e in f.Edges:
                 if any(e.isSame(x) for x in g.Edges):
-                    r = ck.check_edge(solid, e)
+                    r = ck.check_edge(solid, e, scales=scales)
                     r["edge"] = ck.element_name(solid, e, "Edge")
                     r["faces"] = [ck.element_name(solid, f, "Face"),
                                   ck.element_name(solid, g, "Face")]
@@ -1085,8 +1086,9 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         blended = [b for b in blended if not any(b is x for x in drop)]
     t_assemble = time.perf_counter()
     faces = [(b, _find_face(solid, b)) for b in blended]
-    checks = _trimline_checks(solid, faces)
-    corner_checks = [_corner_check(solid, p) for p in filled] if blended else []
+    scales = {}  # each face's curvature scale, sampled once for all the checks below
+    checks = _trimline_checks(solid, faces, scales)
+    corner_checks = [_corner_check(solid, p, scales) for p in filled] if blended else []
     kept += [{"where": p.where(), "reason": "OCCT's corner patch, kept with the fillets "
               "that meet there"} for p in patches if not blended
              or not any(p is q for q in filled)]
@@ -1101,8 +1103,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "kept_occt_faces": kept,
         "solid_check": solid_check,
         "trimlines": checks,
-        "mitres": _shared_edge_checks(solid, faces, False),
-        "junctions": _shared_edge_checks(solid, faces, True),
+        "mitres": _shared_edge_checks(solid, faces, False, scales),
+        "junctions": _shared_edge_checks(solid, faces, True, scales),
         "corner_patches": corner_checks,
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
