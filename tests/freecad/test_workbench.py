@@ -673,6 +673,23 @@ def test_blend_coaxial_cylinders():
     assert min(r["g2"] for r in rep1["trimlines"]) > 0.5  # 1.30 and 1.07
 
 
+
+@pytest.mark.parametrize("axis", [V(math.sin(0.5), 0, math.cos(0.5)), V(0, 1, 0)])
+def test_blend_between_cylinders_at_an_angle(axis):
+    """Blend faces between cylinders whose axes are tilted 0.5 rad or perpendicular: the
+    fit's normal error must stay well under the 1e-8 rad of G1. Fitted at 1e-7 of the
+    blend's size (the fillet uses 1e-8), the normal angle was 6.7e-8 and 8.1e-8 rad, so
+    the verdict read G0 while the data agree to 3e-9."""
+    a = Part.makeCylinder(5, 10)
+    foot = V(3, 0, 18) if axis.z else V(0, 12, 20)
+    b = Part.makeCylinder(4 if axis.z else 3, 10, foot, axis)
+    ea = a.Edges[shapes.circle_edge(a, 10)]
+    eb = next(e for e in b.Edges if isinstance(e.Curve, Part.Circle)
+              and e.Curve.Center.isEqual(foot, 1e-9))
+    face, rep = C2Blend.blend(a.Faces[0], ea, b.Faces[0], eb, report=True)
+    assert face.isValid()
+    assert_g2(rep)
+
 # 5. shape parameters change the shape, not the continuity --------------------------------
 def test_shape_parameters_change_shape_not_continuity():
     doc = FreeCAD.newDocument("ShapeParams")
