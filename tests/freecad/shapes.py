@@ -301,6 +301,20 @@ def spline_prism():
     return s, names[0], bs
 
 
+def spline_extrusion():
+    """A profile closed by an interpolated B-spline arch, extruded 20 along y: its top
+    is a surface of extrusion of the spline, meeting the two end planes and the two
+    side planes. Returns (solid, names of the top face's four edges)."""
+    arch = Part.BSplineCurve()
+    arch.interpolate([V(30, 0, 10), V(22, 0, 16), V(12, 0, 13), V(0, 0, 18)])
+    wire = Part.Wire([Part.LineSegment(V(0, 0, 0), V(30, 0, 0)).toShape(),
+                      Part.LineSegment(V(30, 0, 0), V(30, 0, 10)).toShape(), arch.toShape(),
+                      Part.LineSegment(V(0, 0, 18), V(0, 0, 0)).toShape()])
+    s = Part.Face(wire).extrude(V(0, 20, 0))
+    top = next(f for f in s.Faces if not f.Surface.isPlanar())
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if any(e.isSame(x) for x in top.Edges)]
+
 def _edges_at(s, z):
     """Names of the edges of s lying in the plane z (no vertical extent)."""
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)

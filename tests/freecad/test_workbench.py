@@ -1697,6 +1697,17 @@ def test_fillet_across_knot_lines(continuity, radius=2.0):
                               lambda p: 1.5 < p.x < 28.5) < 1e-7
 
 
+def test_mitres_around_a_spline_extrusion():
+    """All four edges of a spline extrusion's top: four mitres where the top's fillets
+    meet the ends' and sides' fillets. Newton's method for a mitre's cut ran off the
+    surfaces, to values numpy's least squares rejects with a SystemError, which escaped
+    as a traceback instead of the march's other way round being tried."""
+    s, names = shapes.spline_extrusion()
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Arch")
+    assert_valid(solid)
+    assert rep["verdict"] == "G2" and len(rep["mitres"]) == 4
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 4
+
 @pytest.mark.parametrize("tilt,fragment", [
     (0.1, "where a side changes face or crosses a knot line, the "),
     (3.0, "OCCT split its fillet at an angle to the fillet's cross-section")])

@@ -17,6 +17,8 @@ Each end of an open fillet chain is one of:
   stops at the ball's section there as computed, and corners.py fills the hole the
   blends leave around the patch.
 """
+import math
+
 import numpy as np
 import Part
 
@@ -124,12 +126,16 @@ def _newton(f, x, scale, what):
     """Newton (least squares when overdetermined) on f(x) -> (residual Vector, [column
     Vectors]) from x, until the residual is rounding (NEWTON_DONE x scale) or the step
     is (near a tangency the Jacobian is nearly singular, so the parameters jitter by
-    more than the residual). Returns x. Raises ValueError naming `what`."""
+    more than the residual). Returns x. Raises ValueError naming `what`, also when the
+    iterates run off to where the surfaces give no finite values (far outside their
+    domains): numpy's least squares would fail there with a SystemError."""
     for _ in range(MAX_NEWTON):
         d, cols = f(x)
         if d.Length <= NEWTON_DONE * scale:
             return x
         jac = np.array([[c.x for c in cols], [c.y for c in cols], [c.z for c in cols]])
+        if not (np.isfinite(jac).all() and math.isfinite(d.Length)):
+            raise ValueError("Newton's method for %s diverged" % what)
         dx = np.linalg.lstsq(jac, [-d.x, -d.y, -d.z], rcond=None)[0]
         x = [a + b for a, b in zip(x, dx)]
         if max(abs(q) for q in dx) <= NEWTON_DONE * (1.0 + max(abs(q) for q in x)):
