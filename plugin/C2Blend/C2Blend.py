@@ -28,14 +28,14 @@ def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 
                   tension=1.0, label="Shape"):
     """Fillet edges of shape with the PDE blend; returns (Part.Solid, report dict).
 
-    edges: Part.Edge objects of shape, names ('Edge3') or 1-based indices.
+    edges: Part.Edge objects of shape, names ('Edge3') or 1-based indices (a single one
+    stands for a list of one; an edge given twice is filleted once).
     radius: rolling-ball radius (model units) fixing the trimlines.
     continuity: 'C1', 'C2' (G2 contact, default) or 'C3'.
     shape_params: (gamma, eta, lambda, rho) for C2, (b, c, d) for C1, (a0..a4) for C3;
     tension scales the cross derivatives. label: the shape's name in error messages.
     """
-    return _fillet.fillet(shape, edges, float(radius), continuity,
-                          tuple(float(p) for p in shape_params), float(tension), label)
+    return _fillet.fillet(shape, edges, radius, continuity, shape_params, tension, label)
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0,
@@ -48,7 +48,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
     """The radius whose fillet of edges lies `setback` from each edge, across it (exact
     between planes: R = setback / tan(alpha / 2), alpha the angle between the faces'
     normals); edges needing different radii raise C2Blend.Error."""
-    return _fillet.radius_for_setback(shape, edges, float(setback), label)
+    return _fillet.radius_for_setback(shape, edges, setback, label)
 
 
 def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1),
@@ -58,9 +58,8 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1)
     Returns a Part.Face, or (Part.Face, report dict) with report=True. labels: the two
     sides' names in error messages and the report, e.g. ("Cylinder.Face1", "Tube.Face3").
     """
-    face, rep = _blendfaces.blend(face1, edge1, face2, edge2, continuity,
-                                  tuple(float(p) for p in shape_params), float(tension),
-                                  names=tuple(labels))
+    face, rep = _blendfaces.blend(face1, edge1, face2, edge2, continuity, shape_params,
+                                  tension, names=tuple(labels))
     return (face, rep) if report else face
 
 
@@ -71,7 +70,8 @@ def blend_solid(faces, where="blend"):
 
 def check(shape, edges, samples=101, label="Shape"):
     """Continuity report (G0/G1/G2) across edges of shape, e.g. of OCCT's own fillets.
-    edges: Part.Edge objects, names ('Edge3') or 1-based indices, each between two faces."""
+    edges: Part.Edge objects, names ('Edge3') or 1-based indices, each between two faces.
+    samples: points per edge (at least 1)."""
     return _check.check(shape, edges, samples, label)
 
 

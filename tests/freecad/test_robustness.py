@@ -31,6 +31,7 @@ def doc(request):
     d.addObject("Part::Feature", "OpenBox").Shape = Part.Shell(Part.makeBox(10, 10, 10).Faces[:5])
     b = Part.makeBox(10, 10, 10)
     d.addObject("Part::Feature", "Rounded").Shape = b.makeFillet(2.0, [b.Edges[0]])
+    d.addObject("Part::Feature", "Inverted").Shape = b.reversed()
     d.recompute()
     yield d
     FreeCAD.closeDocument(d.Name)
@@ -48,6 +49,18 @@ BAD_FILLETS = [
     ("Box", ["Edge1"], math.inf, {}, r"Box: radius must be a positive number"),
     ("Box", ["Edge1"], 0.0, {}, r"Box: radius must be a positive number"),
     ("Box", ["Edge1"], 20.0, {}, r"Box\.Edge1: OCCT's rolling-ball fillet of radius 20 failed"),
+    ("Box", ["Edge1"], 1e-12, {}, r"Box\.Edge1: OCCT's rolling-ball fillet of radius 1e-12 "
+     r"failed .*; radius 1e-12 is too small here: OCCT accepts "),
+    ("Box", ["Edge1"], 1e-5, {}, r"Box\.Edge1: radius 1e-05 is too small: OCCT's fillet of it "
+     r"cannot be told apart from the faces it joins"),
+    ("Box", ["Edge1"], "2", {}, r"Box: radius must be a positive number, got '2'"),
+    ("Box", ["Edge1"], 2.0, {"shape_params": None},
+     r"Box: shape_params: C2 takes 4 shape parameters .*, a sequence of numbers, got None"),
+    ("Box", ["Edge1"], 2.0, {"continuity": ["C2"]}, r"Box: continuity must be C1, C2 or C3"),
+    ("Box", ["Edge1"], 2.0, {"tension": None}, r"Box: tension must be a positive number"),
+    ("Box", [True], 2.0, {}, r"Box: True is not an edge"),
+    ("Inverted", ["Edge1"], 2.0, {}, r"Inverted: the solid is inside out: its faces point "
+     r"inwards \(volume -1000\)"),
     ("Box", ["Edge1"], 2.0, {"continuity": "C9"}, r"Box: continuity must be C1, C2 or C3"),
     ("Box", ["Edge1"], 2.0, {"tension": 0.0}, r"Box: tension must be a positive number"),
     ("Box", ["Edge1"], 2.0, {"tension": math.nan}, r"Box: tension must be a positive number"),
@@ -132,6 +145,64 @@ def test_bad_check_names_the_edge_and_leaves_document_unchanged(doc, name, edges
     assert shapes.document_state(doc) == before
 
 
+def _box_sides():
+    b = Part.makeBox(10, 10, 10)
+    return b, b.Faces[0], next(e for e in b.Faces[0].Edges)
+
+
+SCRIPT_MISUSE = [
+    # (call on the box b (Part.makeBox(10, 10, 10)) and its Face1 f and an edge e of it,
+    #  message fragment); each raised TypeError, ValueError, AttributeError or OCCT's
+    #  "Shape is null", or returned a verdict having measured nothing (samples=0)
+    (lambda C, b, f, e: C.fillet(b, None, 2, label="Box"),
+     r"^Box: edges must be a list of Part\.Edge objects, 'EdgeN' names or 1-based indices, "
+     r"got NoneType$"),
+    (lambda C, b, f, e: C.fillet(None, ["Edge1"], 2, label="Box"),
+     r"^Box: a Part shape is needed, got NoneType$"),
+    (lambda C, b, f, e: C.fillet(b, ["Edge1"], None, label="Box"),
+     r"^Box: radius must be a positive number, got None$"),
+    (lambda C, b, f, e: C.fillet(b, ["Edge1"], 2, shape_params=1.0, label="Box"),
+     r"^Box: shape_params: C2 takes 4 shape parameters"),
+    (lambda C, b, f, e: C.radius_for_setback(b, ["Edge1"], None, label="Box"),
+     r"^Box: setback must be a positive number, got None$"),
+    (lambda C, b, f, e: C.check(b.makeFillet(2, [b.Edges[0]]), ["Edge2"], samples=0),
+     r"^Shape: samples must be a whole number of at least 1, got 0$"),
+    (lambda C, b, f, e: C.check(b, ["Edge2"], samples=10.5),
+     r"^Shape: samples must be a whole number of at least 1, got 10\.5$"),
+    (lambda C, b, f, e: C.blend(None, e, f, e, labels=("A.Face1", "B.Face1")),
+     r"^A\.Face1: a Part\.Face and one of its Part\.Edge objects are needed, got NoneType "
+     r"and Edge$"),
+    (lambda C, b, f, e: C.blend_solid([]),
+     r"^blend: a list of Part\.Face objects is needed .*, got an empty list$"),
+    (lambda C, b, f, e: C.blend_solid(b.Edges),
+     r"^blend: a list of Part\.Face objects is needed .*, got a list of Edge$"),
+]
+
+
+@pytest.mark.parametrize("call,fragment", SCRIPT_MISUSE)
+def test_scripting_misuse_raises_c2blend_errors(call, fragment):
+    """Macros that pass the wrong kinds of arguments get C2Blend.Error naming the
+    argument, not a Python or OCCT exception from deep inside."""
+    import C2Blend
+    b, f, e = _box_sides()
+    with pytest.raises(C2Blend.Error, match=fragment):
+        call(C2Blend, b, f, e)
+
+
+def test_single_and_repeated_edges_are_one_selection():
+    """A single edge (object, name or index) stands for a list of one, and an edge given
+    several ways is filleted once: the report names it once."""
+    import C2Blend
+    b = Part.makeBox(10, 10, 10)
+    volumes = []
+    for edges in (b.Edges[0], "Edge1", 1, ["Edge1", 1, b.Edges[0]]):
+        solid, rep = C2Blend.fillet_report(b, edges, 2.0, label="Box")
+        assert rep["verdict"] == "G2"
+        assert [x["where"] for x in rep["blends"]] == ["Box.Edge1"]
+        volumes.append(solid.Volume)
+    assert max(volumes) - min(volumes) < 1e-9 * volumes[0]
+
+
 @pytest.mark.parametrize("continuity,given,same", [
     ("C1", (0.1, 1.5, 0.5), (0.1, 1.5, 0.5)),
     ("C3", (0.1, 2.0, 2.0, 2.0, 2.0), (0.05, 1.0, 1.0, 1.0, 1.0))])
@@ -176,7 +247,7 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
             break
         doc.undo()
     assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet", "Pair", "OpenBox",
-                                             "Rounded"]
+                                             "Rounded", "Inverted"]
     doc.redo()
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()

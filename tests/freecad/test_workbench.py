@@ -814,8 +814,8 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
     instead of blaming the radius."""
     monkeypatch.setattr(fl, "_rolling_ball", lambda shape, edges, radius: (None, "injected"))
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: OCCT's rolling-ball fillet of radius 2 "
-                       r"failed \(injected\), and so does every radius down to 0\.00195: the "
-                       r"rolling ball cannot follow these edges, whatever the radius"):
+                       r"failed \(injected\), and so does every radius from 0\.00195 to 17\.3: "
+                       r"the rolling ball cannot follow these edges, whatever the radius"):
         fl.fillet(shapes.box(), ["Edge1"], 2.0, label="Box")
 
 

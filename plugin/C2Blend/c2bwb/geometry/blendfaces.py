@@ -87,7 +87,11 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
     Returns (Part.Face, report dict). Raises C2BlendError naming the faces/edges.
     """
     t0 = time.perf_counter()
-    shape_params = check_params(1.0, continuity, shape_params, tension, names[0])
+    for face, edge, name in ((face1, edge1, names[0]), (face2, edge2, names[1])):
+        if not isinstance(face, Part.Face) or not isinstance(edge, Part.Edge):
+            raise C2BlendError("a Part.Face and one of its Part.Edge objects are needed, got "
+                               "%s and %s" % (type(face).__name__, type(edge).__name__), name)
+    _, shape_params, tension = check_params(1.0, continuity, shape_params, tension, names[0])
     t1, t2 = Trimline(face1, edge1, names[0]), Trimline(face2, edge2, names[1])
     align(t1, t2)
     where = "%s -> %s" % names
@@ -127,7 +131,19 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
 
 def close_solid(faces, where):
     """One solid from faces (primaries + blend), capping planar free boundaries.
-    Raises C2BlendError when no closed shell results."""
+    Raises C2BlendError when faces are not Part.Face objects or no closed shell results."""
+    try:
+        given = list(faces)
+    except TypeError:
+        given = None
+    if not given or not all(isinstance(f, Part.Face) for f in given):
+        kinds = sorted({type(f).__name__ for f in given}) if given else None
+        raise C2BlendError("a list of Part.Face objects is needed (the primaries' faces "
+                           "and the blend), got %s" % (
+                               "a list of %s" % " and ".join(kinds) if kinds else
+                               "an empty list" if given == [] else type(faces).__name__),
+                           where)
+    faces = given
     sewn = Part.Compound(faces)
     sewn.sewShape()
     shell = sewn if sewn.ShapeType == "Shell" else Part.Shell(sewn.Faces)

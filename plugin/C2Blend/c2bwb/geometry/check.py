@@ -19,6 +19,7 @@ This works on any shape, including OCCT's own fillets (G1: their curvature jumps
 across the contact edges).
 """
 import math
+import numbers
 
 import Part
 
@@ -43,10 +44,23 @@ def edge_faces(shape, edge):
 def named_edges(shape, edges, label, purpose):
     """[(name, Part.Edge)] from Part.Edge objects, 'EdgeN' names or 1-based indices of
     edges of shape (`label` in messages; purpose: what the edges are for, e.g. 'fillet').
-    Raises C2BlendError naming the offending element."""
+    A single edge, name or index stands for a list of one; an edge given twice counts
+    once. Raises C2BlendError naming the offending element."""
+    if not isinstance(shape, Part.Shape):
+        raise C2BlendError("a Part shape is needed, got %s" % type(shape).__name__, label)
+    if isinstance(edges, (str, numbers.Integral, Part.Shape)):
+        edges = [edges]
+    try:
+        edges = list(edges)
+    except TypeError:
+        raise C2BlendError("edges must be a list of Part.Edge objects, 'EdgeN' names or "
+                           "1-based indices, got %s" % type(edges).__name__, label) from None
     out = []
     for e in edges:
-        if isinstance(e, int):
+        if isinstance(e, bool) or not isinstance(e, (numbers.Integral, str, Part.Shape)):
+            raise C2BlendError("%r is not an edge: give Part.Edge objects, 'EdgeN' names or "
+                               "1-based indices" % (e,), label)
+        if isinstance(e, numbers.Integral):
             e = "Edge%d" % e
         if isinstance(e, str):
             if not e.startswith("Edge"):
@@ -69,7 +83,7 @@ def named_edges(shape, edges, label, purpose):
         out.append((name, e))
     if not out:
         raise C2BlendError("no edges given", label)
-    return out
+    return [x for i, x in enumerate(out) if all(x[0] != y[0] for y in out[:i])]
 
 
 def sample_params(edge, n):
@@ -206,6 +220,9 @@ def check(shape, edges, samples=101, label="Shape"):
      "verdict": worst verdict}. Raises C2BlendError naming `label` and the edge when an
     edge is not one of shape's or does not lie between two faces.
     """
+    if isinstance(samples, bool) or not isinstance(samples, numbers.Integral) or samples < 1:
+        raise C2BlendError("samples must be a whole number of at least 1, got %r"
+                           % (samples,), label)
     named = named_edges(shape, edges, label, "check")
     for name, edge in named:
         faces = edge_faces(shape, edge)

@@ -280,7 +280,8 @@ def trim(blends, original_face):
         try:
             pieces = b.full_face.generalFuse(cuts[id(b)])[0].Faces
         except Exception as ex:  # OCCT's general fuse failed on this blend
-            failed.append((b, "cutting its blend along the curves at its ends failed (%s)"
+            failed.append((b, "cutting its blend along the curves at its ends failed (OCCT's "
+                           "general fuse of the blend face with those curves reports: %s)"
                            % occt_message(ex)))
             continue
         tol = CUT_TOL * b.surface_diag

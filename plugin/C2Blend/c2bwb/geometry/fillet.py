@@ -28,6 +28,7 @@ Unassembled), with the fillets that meet them in a mitre or at a corner patch, a
 that corner patch.
 """
 import math
+import numbers
 import time
 
 import Part
@@ -41,7 +42,7 @@ from . import corners as cn
 from . import ends
 from .knots import at_face_changes, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
-                          new_faces)
+                          new_faces, off_boundary)
 from .surface import Frame, angle, frame_at_point, off_surface, project
 from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
 
@@ -115,9 +116,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
     C2BlendError naming `label` and the edges for a setback that is not a positive
     number, bad edges (resolve_edges), or edges whose angles need radii more than 1e-9
     (relative) apart: a fillet has one radius."""
-    if not (isinstance(setback, (int, float)) and math.isfinite(setback) and setback > 0):
-        raise C2BlendError("setback must be a positive number, got %r" % (setback,), label,
-                           "radius")
+    setback = positive_number(setback, "setback", label, "radius")
     radii = []
     for name, edge in resolve_edges(shape, edges, label):
         alpha = _normals_angle(ck.edge_faces(shape, edge), edge)
@@ -132,7 +131,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
 
 
 def check_solid(shape, label):
-    """Raise C2BlendError naming `label` unless shape is one closed solid."""
+    """Raise C2BlendError naming `label` unless shape is one closed solid, outside out."""
     solids = [] if shape.isNull() else shape.Solids
     if len(solids) != 1 or len(shape.Faces) != len(solids[0].Faces):
         raise C2BlendError("the shape is a %s with %d solid(s) and %d face(s) outside "
@@ -140,23 +139,32 @@ def check_solid(shape, label):
                            % ("null shape" if shape.isNull() else shape.ShapeType,
                               len(solids), len(shape.Faces) - sum(len(s.Faces) for s in solids)),
                            label)
+    if solids[0].Volume < 0:
+        raise C2BlendError("the solid is inside out: its faces point inwards (volume %.6g); "
+                           "reverse it first (shape.reversed())" % solids[0].Volume, label)
+
+
+def positive_number(x, what, label, field=None):
+    """float(x) for a finite positive real number x (not a bool or a string); raises
+    C2BlendError naming `label`, `what` (the parameter) and x otherwise."""
+    if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
+            math.isfinite(x) and x > 0):
+        raise C2BlendError("%s must be a positive number, got %r" % (what, x), label, field)
+    return float(x)
 
 
 def check_params(radius, continuity, shape_params, tension, label):
-    """Validate the numeric parameters; raise C2BlendError naming the bad one.
-    Returns the shape parameters for the continuity (see trimlines.shape_for)."""
-    if not (isinstance(radius, (int, float)) and math.isfinite(radius) and radius > 0):
-        raise C2BlendError("radius must be a positive number, got %r" % (radius,), label,
-                           "radius")
-    if continuity not in ROWS:
+    """Validate the parameters; raise C2BlendError naming the bad one. Returns
+    (radius, shape parameters for the continuity (see trimlines.shape_for), tension),
+    as floats."""
+    radius = positive_number(radius, "radius", label, "radius")
+    if not (isinstance(continuity, str) and continuity in ROWS):
         raise C2BlendError("continuity must be C1, C2 or C3, got %r" % (continuity,), label)
     try:
         shape = shape_for(continuity, shape_params)
     except (TypeError, ValueError) as ex:
         raise C2BlendError("shape_params: %s" % ex, label) from None
-    if not (math.isfinite(tension) and tension > 0):
-        raise C2BlendError("tension must be a positive number, got %r" % (tension,), label)
-    return shape
+    return radius, shape, positive_number(tension, "tension", label)
 
 
 def sample_rows(chain, contact, n, nrows, tension, where):
@@ -376,11 +384,15 @@ def _on_face(face, p, tol):
 def _probe(face):
     """A point inside face: the first point of a 3 x 3 grid of its parameter range that
     lies in the face, else (a face with no such point, as an L-shaped one) the centre of
-    the largest triangle of its mesh, put on its surface."""
+    the largest triangle of its mesh, put on its surface, or, for a sliver too thin to
+    mesh (OCCT's fillet at a radius within 1e-7 of a face's width), its centre of mass,
+    put on its surface."""
     inside = interior_points(face, 3)
     if inside:
         return inside[0]
     pts, tris = face.tessellate(1e-2 * face.BoundBox.DiagonalLength)
+    if not tris:
+        return face.Surface.value(*face.Surface.parameter(face.CenterOfMass))
     tri = max(tris, key=lambda t: (pts[t[1]] - pts[t[0]]).cross(pts[t[2]] - pts[t[0]]).Length)
     c = (pts[tri[0]] + pts[tri[1]] + pts[tri[2]]) * (1.0 / 3.0)
     return face.Surface.value(*face.Surface.parameter(c))
@@ -988,23 +1000,30 @@ def _rolling_ball(shape, edges, radius):
 
 
 def _rolling_ball_failure(shape, edges, radius, msg):
-    """The message for a failed rolling-ball fillet, with the largest radius OCCT accepts
-    on these edges (halving from radius, then 6 bisections: about 1 % below the limit),
-    or the statement that no radius down to radius / 1024 works."""
+    """The message for a failed rolling-ball fillet, with the radius nearest to `radius`
+    that OCCT accepts on these edges: halving from radius down to radius / 1024, else
+    doubling up to the shape's diagonal (a radius near OCCT's tolerance fails too), then
+    6 bisections (about 1 % from the limit); or the statement that no radius works."""
     def works(r):
         return _rolling_ball(shape, edges, r)[0] is not None
 
     head = "OCCT's rolling-ball fillet of radius %g failed (%s)" % (radius, msg)
-    lo = next((radius / 2 ** k for k in range(1, 11) if works(radius / 2 ** k)), None)
-    if lo is None:
-        return ("%s, and so does every radius down to %.3g: the rolling ball cannot follow "
-                "these edges, whatever the radius" % (head, radius / 1024))
-    hi = 2 * lo
+    diag = shape.BoundBox.DiagonalLength
+    ok = next((radius / 2 ** k for k in range(1, 11) if works(radius / 2 ** k)), None)
+    if ok is not None:
+        bad = 2 * ok
+    else:
+        ups = (radius * 2 ** k for k in range(1, 64) if radius * 2 ** k < diag)
+        ok = next((r for r in ups if works(r)), None)
+        if ok is None:
+            return ("%s, and so does every radius from %.3g to %.3g: the rolling ball cannot "
+                    "follow these edges, whatever the radius" % (head, radius / 1024, diag))
+        bad = ok / 2
     for _ in range(6):
-        mid = math.sqrt(lo * hi)
-        lo, hi = (mid, hi) if works(mid) else (lo, mid)
-    return ("%s; radius %g is too large here: OCCT accepts %.3g but not %.3g on these "
-            "edges" % (head, radius, lo, hi))
+        mid = math.sqrt(ok * bad)
+        ok, bad = (mid, bad) if works(mid) else (ok, mid)
+    return ("%s; radius %g is too %s here: OCCT accepts %.3g but not %.3g on these "
+            "edges" % (head, radius, "large" if ok < radius else "small", ok, bad))
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),
@@ -1025,7 +1044,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     The input shape is not modified.
     """
     t0 = time.perf_counter()
-    shape_params = check_params(radius, continuity, shape_params, tension, label)
+    radius, shape_params, tension = check_params(radius, continuity, shape_params, tension,
+                                                 label)
     names = resolve_edges(shape, edges, label)
     check_solid(shape, label)
     # OCCT's fillet shares faces and edges with its input, and what follows writes to
@@ -1040,6 +1060,12 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                            "radius")
     t_occt = time.perf_counter() - t0
     fillet_faces = new_faces(shape, result)
+    if not fillet_faces:
+        raise C2BlendError("radius %g is too small: OCCT's fillet of it cannot be told "
+                           "apart from the faces it joins (it lies within %.2g of them, 10 "
+                           "times their tolerance); use a larger radius"
+                           % (radius, max(off_boundary(f) for f in result.Faces)),
+                           where_all, "radius")
     blended, kept = [], []
     all_chains, patches = chains([RollingBallFace(result, f, fillet_faces)
                                   for f in fillet_faces])

@@ -35,15 +35,21 @@ def interior_points(face, n=4):
     return out
 
 
+def off_boundary(face):
+    """How far (model units) a face of OCCT's result must leave the original solid's
+    boundary to be a new face: 10 times its tolerance, at least 1e-6."""
+    return 10.0 * max(face.Tolerance, 1e-7)
+
+
 def new_faces(original, result):
     """Faces of `result` that do not lie on the boundary of `original` (the fillets):
-    some interior point is farther than 10x the face tolerance from every original face."""
+    some interior point is farther than off_boundary from every original face."""
     boundary = Part.Compound(original.Faces)
     out = []
     for f in result.Faces:
         if any(f.isSame(g) for g in original.Faces):
             continue
-        tol = 10.0 * max(f.Tolerance, 1e-7)
+        tol = off_boundary(f)
         if any(boundary.distToShape(Part.Vertex(p))[0] > tol for p in interior_points(f)):
             out.append(f)
     return out

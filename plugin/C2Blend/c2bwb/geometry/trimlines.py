@@ -36,7 +36,11 @@ def shape_for(continuity, shape_params):
     (the default of any length) becomes all ones of the right length. Raises
     ValueError naming the expected parameters otherwise."""
     names = SHAPE_NAMES[continuity]
-    values = tuple(float(p) for p in shape_params)
+    try:
+        values = tuple(float(p) for p in shape_params)
+    except (TypeError, ValueError):
+        raise ValueError("%s takes %d shape parameters (%s), a sequence of numbers, got %r"
+                         % (continuity, len(names), ", ".join(names), shape_params)) from None
     if not all(math.isfinite(p) for p in values):
         raise ValueError("shape parameters must be finite, got %r" % (values,))
     if len(values) == len(names):

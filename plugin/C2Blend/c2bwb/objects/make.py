@@ -52,7 +52,7 @@ def _checked_params(radius, continuity, shape_params, tension, label):
     """The shape parameters of continuity, checked with the radius and tension; raises
     C2BlendError naming label."""
     from ..geometry import fillet as fl
-    sp = fl.check_params(radius, continuity, shape_params, tension, label)
+    sp = fl.check_params(radius, continuity, shape_params, tension, label)[1]
     try:
         features.object_values(continuity, sp)
     except ValueError as ex:
