@@ -203,6 +203,20 @@ def test_single_and_repeated_edges_are_one_selection():
     assert max(volumes) - min(volumes) < 1e-9 * volumes[0]
 
 
+def test_document_objects_store_the_edges_names(doc):
+    """make_fillet and make_check take what the scripting API takes (a name, an index,
+    a Part.Edge, or a list of them) and store the edges' names, once each: a single
+    name was split into its letters ('E is not an edge'), and a Part.Edge could not be
+    stored in the link."""
+    box = doc.getObject("Box")
+    f = make.make_fillet(box, "Edge1", 2.0)
+    assert f.Base[1] == ["Edge1"] and f.Verdict == "G2"
+    f2 = make.make_fillet(box, [box.Shape.Edges[0], 1, "Edge2"], 2.0)
+    assert f2.Base[1] == ["Edge1", "Edge2"] and f2.Verdict == "G2"
+    c = make.make_check(f, [3])
+    assert c.Target[1] == ["Edge3"] and c.Verdict
+
+
 @pytest.mark.parametrize("continuity,given,same", [
     ("C1", (0.1, 1.5, 0.5), (0.1, 1.5, 0.5)),
     ("C3", (0.1, 2.0, 2.0, 2.0, 2.0), (0.05, 1.0, 1.0, 1.0, 1.0))])

@@ -61,15 +61,16 @@ def _checked_params(radius, continuity, shape_params, tension, label):
 
 
 def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0):
-    """A C2Fillet object filleting edges (names like 'Edge3') of document object base.
-    The selection and parameters are validated before the document is touched; any
-    later failure aborts the transaction, so the document is left as it was."""
+    """A C2Fillet object filleting edges (names like 'Edge3', 1-based indices or Part.Edge
+    objects, or one of them) of document object base. The selection and parameters are
+    validated before the document is touched; any later failure aborts the
+    transaction, so the document is left as it was."""
     from ..geometry import fillet as fl
     sp = _checked_params(radius, continuity, shape_params, tension, base.Label)
-    fl.resolve_edges(base.Shape, list(edges), base.Label)
+    names = [n for n, _ in fl.resolve_edges(base.Shape, edges, base.Label)]
 
     def setup(obj):
-        obj.Base = (base, list(edges))
+        obj.Base = (base, names)
         obj.Radius = float(radius)
         set_params(obj, continuity, sp, tension)
     obj = _add(base.Document, "Part::FeaturePython", "C2Fillet", features.C2Fillet, setup)
@@ -97,9 +98,13 @@ def make_blend(side1, side2, continuity="C2", shape_params=(1, 1, 1, 1), tension
 
 
 def make_check(target, edges, samples=101):
-    """A C2Check object reporting continuity across edges of target."""
+    """A C2Check object reporting continuity across edges of target (as for
+    make_fillet)."""
+    from ..geometry import check as ck
+    names = [n for n, _ in ck.named_edges(target.Shape, edges, target.Label, "check")]
+
     def setup(obj):
-        obj.Target = (target, list(edges))
+        obj.Target = (target, names)
         obj.Samples = samples
     return _add(target.Document, "App::FeaturePython", "C2Check", features.C2Check, setup)
 
