@@ -13,6 +13,13 @@
 /* The end rows (S, S_u, ... at u = 0 and 1) are fitted along v to this fraction of
  * the relative tolerance, each relative to its own magnitude along the trimline. */
 #define C2B_FIT_TRIM_FACTOR 1e-2
+/* ... and their normals (from S_u and S_v) to this fraction of tol_rel (radians). S_v
+ * along a trimline is not one of the rows: it follows from S's interpolation in v, and
+ * S within 1e-10 of the diagonal left the normal of a box's corner run tilted by
+ * 1.5e-8 rad at places, over the 1e-8 rad a G1 check allows. A tighter fraction (0.1)
+ * doubled the v-poles of fillets already at 2e-9 rad (a shaft on a plate, a loft), and
+ * their faces took twice as long to sew and check. */
+#define C2B_FIT_TILT_FACTOR 0.3
 
 c2b_fit_options c2b_fit_options_default(void)
 {
@@ -193,9 +200,10 @@ static void fit_free(fit *f)
     memset(f, 0, sizeof *f);
 }
 
-/* Evaluate d^ku/du^ku of the fit on the grid u[nu] x v[nv] into out[(i*nv+j)*3+c]. */
+/* Evaluate d^(ku+kv)/du^ku dv^kv of the fit on the grid u[nu] x v[nv] into
+ * out[(i*nv+j)*3+c]. */
 static int fit_eval_grid(const fit *f, int nu, const double *u, int ku, int nv, const double *v,
-                         double *out)
+                         int kv, double *out)
 {
     int npu = f->u.npoles, npv = f->v.npoles, pu = f->u.p, pv = f->v.p;
     double *q = malloc((size_t)npu * (size_t)nv * 3 * sizeof *q);
@@ -206,7 +214,7 @@ static int fit_eval_grid(const fit *f, int nu, const double *u, int ku, int nv, 
     for (int j = 0; j < nv; j++) {
         int idx[C2B_NURBS_MAX_DEGREE + 1];
         double val[C2B_NURBS_MAX_DEGREE + 1];
-        dir_basis(&f->v, v[j], 0, idx, val);
+        dir_basis(&f->v, v[j], kv, idx, val);
         for (int i = 0; i < npu; i++)
             for (int l = 0; l <= pv; l++) {
                 const double *P = f->poles + ((size_t)i * (size_t)npv + (size_t)idx[l]) * 3;
@@ -381,7 +389,7 @@ static c2b_status deviation(const fit *f, const c2b_blend *b, int nu, const doub
     st = c2b_blend_eval_grid(b, (size_t)nu, u, (size_t)nv, v, 0, a, err);
     if (st)
         goto done;
-    if (fit_eval_grid(f, nu, u, 0, nv, v, s)) {
+    if (fit_eval_grid(f, nu, u, 0, nv, v, 0, s)) {
         st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
         goto done;
     }
@@ -421,15 +429,17 @@ done:
  * error of that size changes the normal curvature by about 1/diag, so nearly flat
  * rows are not chased into rounding noise). */
 static c2b_status trim_errors(const fit *f, const c2b_blend *b, int nv, const double *v,
-                              double diag, double *ev, double res[2][C2B_MAX_N], c2b_error *err)
+                              double diag, double *ev, double *evn,
+                              double res[2][C2B_MAX_N], double tilt[2], c2b_error *err)
 {
     int n = f->n;
     size_t nd = c2b_blend_deriv_count(n - 1);
     double ue[2] = {0.0, 1.0};
     double *an = malloc(2 * (size_t)nv * nd * 3 * sizeof *an);
     double *fv = malloc((size_t)nv * 3 * sizeof *fv);
+    double *fu = malloc((size_t)nv * 3 * sizeof *fu);
     c2b_status st = C2B_OK;
-    if (!an || !fv)
+    if (!an || !fv || !fu)
         st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
     else
         st = c2b_blend_eval_grid(b, 2, ue, (size_t)nv, v, n - 1, an, err);
@@ -438,7 +448,7 @@ static c2b_status trim_errors(const fit *f, const c2b_blend *b, int nv, const do
         pmax = fmax(pmax, fabs(f->poles[k]));
     for (int side = 0; !st && side < 2; side++)
         for (int k = 0; k < n; k++) {
-            if (fit_eval_grid(f, 1, &ue[side], k, nv, v, fv)) {
+            if (fit_eval_grid(f, 1, &ue[side], k, nv, v, 0, fv)) {
                 st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
                 break;
             }
@@ -469,8 +479,47 @@ static c2b_status trim_errors(const fit *f, const c2b_blend *b, int nv, const do
             if (res)
                 res[side][k] = r;
         }
+    /* The normal's angle to the blend's along each trimline, from the fit's S_u and S_v,
+     * per v-span into evn[] (may be NULL), less the rounding floor: S_u and S_v are
+     * differences of pole rows amplified by 2p/h (h: the span), relative to their
+     * length. */
+    for (int side = 0; !st && side < 2; side++) {
+        if (fit_eval_grid(f, 1, &ue[side], 1, nv, v, 0, fu) ||
+            fit_eval_grid(f, 1, &ue[side], 0, nv, v, 1, fv)) {
+            st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
+            break;
+        }
+        double hu = side ? f->u.b[f->u.nb - 1] - f->u.b[f->u.nb - 2] : f->u.b[1] - f->u.b[0];
+        double worst = 0;
+        for (int j = 0; j < nv; j++) {
+            const double *row = an + ((size_t)side * (size_t)nv + (size_t)j) * nd * 3;
+            const double *su = row + 3, *sv = row + 6, *gu = fu + j * 3, *gv = fv + j * 3;
+            double nb[3] = {su[1] * sv[2] - su[2] * sv[1], su[2] * sv[0] - su[0] * sv[2],
+                            su[0] * sv[1] - su[1] * sv[0]};
+            double nf[3] = {gu[1] * gv[2] - gu[2] * gv[1], gu[2] * gv[0] - gu[0] * gv[2],
+                            gu[0] * gv[1] - gu[1] * gv[0]};
+            double cr[3] = {nb[1] * nf[2] - nb[2] * nf[1], nb[2] * nf[0] - nb[0] * nf[2],
+                            nb[0] * nf[1] - nb[1] * nf[0]};
+            double dot = nb[0] * nf[0] + nb[1] * nf[1] + nb[2] * nf[2];
+            double a = atan2(sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), dot);
+            int sp = dir_bspan(&f->v, dir_wrap(&f->v, v[j]));
+            double hv = f->v.b[sp + 1] - f->v.b[sp];
+            double nsu = sqrt(su[0] * su[0] + su[1] * su[1] + su[2] * su[2]);
+            double nsv = sqrt(sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2]);
+            if (!(nsu > 0 && nsv > 0))
+                continue;
+            double floor = 16 * DBL_EPSILON * pmax *
+                           (2.0 * f->u.p / hu / nsu + 2.0 * f->v.p / hv / nsv);
+            worst = fmax(worst, a);
+            if (evn)
+                evn[sp] = fmax(evn[sp], fmax(a - floor, 0.0));
+        }
+        if (tilt)
+            tilt[side] = worst;
+    }
     free(an);
     free(fv);
+    free(fu);
     return st;
 }
 
@@ -528,6 +577,7 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
     static const double F6[6] = {0.07, 0.23, 0.41, 0.59, 0.77, 0.93};
     static const double F8[8] = {0.03, 0.16, 0.29, 0.44, 0.56, 0.71, 0.84, 0.97};
     double tol = 0, bbox[6], trim_worst = 0; /* the end rows' worst relative residual */
+    double tilt_worst = 0;                      /* ... and their normals' worst angle */
     int done = 0;
     double *us = NULL, *vs = NULL, *eu = NULL, *ev = NULL;
     for (rep->iterations = 1; rep->iterations <= opt->max_iter && !st; rep->iterations++) {
@@ -575,30 +625,37 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
         /* The end rows are the contact with the primaries: refine v until each is
          * approximated to C2B_FIT_TRIM_FACTOR * tol_rel of its own magnitude. */
         double *evt = calloc((size_t)f.v.nb, sizeof *evt);
+        double *evn = calloc((size_t)f.v.nb, sizeof *evn);
         unsigned char *su = calloc((size_t)f.u.nb, 1), *sv = calloc((size_t)f.v.nb, 1);
-        if (!su || !sv || !evt) {
+        if (!su || !sv || !evt || !evn) {
             free(su);
             free(sv);
             free(evt);
+            free(evn);
             st = c2b_error_set(err, C2B_ERR_NOMEM, "fit: out of memory");
             break;
         }
-        st = trim_errors(&f, b, nvs, vs, rep->bbox_diagonal, evt, NULL, err);
+        st = trim_errors(&f, b, nvs, vs, rep->bbox_diagonal, evt, evn, NULL, NULL, err);
         if (st) {
             free(su);
             free(sv);
             free(evt);
+            free(evn);
             break;
         }
         int nsplit = 0;
-        trim_worst = 0;
-        for (int k = 0; k < f.v.nb - 1; k++)
+        trim_worst = tilt_worst = 0;
+        for (int k = 0; k < f.v.nb - 1; k++) {
             trim_worst = fmax(trim_worst, evt[k]);
+            tilt_worst = fmax(tilt_worst, evn[k]);
+        }
         for (int k = 0; k < f.u.nb - 1; k++)
             nsplit += su[k] = eu[k] > 0.5 * tol;
         for (int k = 0; k < f.v.nb - 1; k++)
-            nsplit += sv[k] = ev[k] > 0.5 * tol || evt[k] > C2B_FIT_TRIM_FACTOR * opt->tol_rel;
+            nsplit += sv[k] = ev[k] > 0.5 * tol || evt[k] > C2B_FIT_TRIM_FACTOR * opt->tol_rel ||
+                              evn[k] > C2B_FIT_TILT_FACTOR * opt->tol_rel;
         free(evt);
+        free(evn);
         if (!nsplit) {
             /* Independent check grid, offset from every site and knot. */
             int ncu, ncv;
@@ -622,9 +679,11 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
                 /* Residuals of the end rows against the blend: on the check v's, and at
                  * the v-interpolation sites, where the Hermite end rows are exact. */
                 if (!st && done)
-                    st = trim_errors(&f, b, ncv, cv, rep->bbox_diagonal, NULL, rep->residual, err);
+                    st = trim_errors(&f, b, ncv, cv, rep->bbox_diagonal, NULL, NULL,
+                                     rep->residual, rep->tilt, err);
                 if (!st && done)
-                    st = trim_errors(&f, b, f.v.npoles, f.vsite, rep->bbox_diagonal, NULL, rep->site_residual, err);
+                    st = trim_errors(&f, b, f.v.npoles, f.vsite, rep->bbox_diagonal, NULL, NULL,
+                                     rep->site_residual, NULL, err);
             }
             free(cu);
             free(cv);
@@ -659,18 +718,24 @@ c2b_status c2b_fit_blend(const c2b_blend *b, const c2b_fit_options *opt,
         else
             snprintf(why, sizeof why, "%d refinement rounds (the limit) gave %d x %d poles",
                      opt->max_iter, f.u.npoles, f.v.npoles);
+        double rows = C2B_FIT_TRIM_FACTOR * opt->tol_rel, tilt = C2B_FIT_TILT_FACTOR * opt->tol_rel;
         if (rep->deviation > tol)
             st = c2b_error_set(err, C2B_ERR_NUMERIC,
                                "fit: tolerance %.3g (%.3g x bounding-box diagonal %.6g) not "
                                "reached: deviation %.3g; %s",
                                tol, opt->tol_rel, rep->bbox_diagonal, rep->deviation, why);
-        else
+        else if (trim_worst > rows)
             st = c2b_error_set(err, C2B_ERR_NUMERIC,
                                "fit: the trimline rows (S, S_u, S_uu at u = 0 and 1) are within "
                                "%.3g of their size, not the %.3g that exact contact needs (the "
                                "surface is within %.3g, under the tolerance %.3g); %s",
-                               trim_worst, C2B_FIT_TRIM_FACTOR * opt->tol_rel,
-                               rep->deviation, tol, why);
+                               trim_worst, rows, rep->deviation, tol, why);
+        else
+            st = c2b_error_set(err, C2B_ERR_NUMERIC,
+                               "fit: the normals along the trimlines (u = 0 and 1) are within "
+                               "%.3g rad of the blend's, not the %.3g rad that exact contact "
+                               "needs (the surface is within %.3g, under the tolerance %.3g); %s",
+                               tilt_worst, tilt, rep->deviation, tol, why);
     }
     if (!st)
         st = make_surface(&f, out, err);

@@ -12,7 +12,9 @@
  * until a dense check grid offset from every site and knot is within tolerance. The
  * end rows S, S_u, ... at u = 0 and 1 are refined along v until each is within 1% of
  * tol_rel of its own magnitude, so the contact with the primaries (position, tangent
- * and curvature) is two orders tighter than the interior deviation. An end row's
+ * and curvature) is two orders tighter than the interior deviation; so is the
+ * normal there (from S_u and S_v: S_v is no row, it follows from S's interpolation in
+ * v), to within 30% of tol_rel in radians. An end row's
  * k-th derivative is a difference of k + 1 pole rows, amplified by 2^k p!/(p-k)!/h^k
  * (h: the end span); the rounding error this leaves (16 eps x largest pole coordinate
  * x that factor) is not counted, since no refinement along v can remove it.
@@ -47,6 +49,8 @@ typedef struct c2b_fit_report {
     double residual[2][C2B_MAX_N]; /**< max |d^k S_fit/du^k - d^k S/du^k| at u = side, dense v */
     double site_residual[2][C2B_MAX_N]; /**< the same at the v-interpolation sites, where the
                                              end rows are exact up to rounding */
+    double tilt[2];       /**< max angle (rad) between the fit's and the blend's normals at
+                               u = 0 and 1, dense v */
     int npoles[2];        /**< distinct poles in u and v */
     int iterations;
     long check_points;    /**< size of the final check grid */

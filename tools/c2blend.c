@@ -377,6 +377,9 @@ static int cmd_fit(const options *o, const c2b_blend *b)
         for (int k = 0; k < c2b_blend_constraints(b); k++)
             cJSON_AddNumberToObject(r, dn[k], rep.residual[side][k]);
     }
+    cJSON *tilt = cJSON_AddObjectToObject(root, "tilt");
+    cJSON_AddNumberToObject(tilt, "u0", rep.tilt[0]);
+    cJSON_AddNumberToObject(tilt, "u1", rep.tilt[1]);
     cJSON *np = cJSON_AddArrayToObject(root, "poles");
     cJSON_AddItemToArray(np, cJSON_CreateNumber(rep.npoles[0]));
     cJSON_AddItemToArray(np, cJSON_CreateNumber(rep.npoles[1]));

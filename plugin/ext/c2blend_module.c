@@ -996,6 +996,7 @@ static PyObject *fit_dict(c2blend_state *st, const c2b_nurbs_surface *s, const c
         dset(d, "residuals", sides_dict(rep->residual[0], rep->residual[1], n)) < 0 ||
         dset(d, "site_residuals",
              sides_dict(rep->site_residual[0], rep->site_residual[1], n)) < 0 ||
+        dset(d, "tilt", Py_BuildValue("{s:d,s:d}", "u0", rep->tilt[0], "u1", rep->tilt[1])) < 0 ||
         dset_f(d, "seconds", rep->seconds) < 0 || dset_i(d, "iterations", rep->iterations) < 0 ||
         dset_i(d, "check_points", rep->check_points) < 0 ||
         dset(d, "npoles", Py_BuildValue("(ii)", rep->npoles[0], rep->npoles[1])) < 0)
@@ -1040,7 +1041,9 @@ PyDoc_STRVAR(Blend_fit_doc,
 "Report: deviation, tolerance, bbox_diagonal (model units); residuals and\n"
 "site_residuals {'u0': {'S': .., 'S_u': .., 'S_uu': ..}, 'u1': {...}}, the measured\n"
 "maxima of |d^k S_fit/du^k - d^k S/du^k| along each trimline (dense v, resp. the\n"
-"interpolation sites); seconds; iterations; check_points; npoles (nu, nv); nurbs (the\n"
+"interpolation sites); tilt {'u0': .., 'u1': ..}, the largest angle (rad) between the\n"
+"fit's and the blend's normals along each trimline (dense v); seconds; iterations;\n"
+"check_points; npoles (nu, nv); nurbs (the\n"
 "kernel's JSON form, usable as a spec's primaries[i].nurbs).");
 
 /** fit(tol=1e-6, degree_v=5, max_poles=400, max_iter=30): certified B-spline surface. */

@@ -135,8 +135,10 @@ static void check_fit(const char *name, const c2b_blend *b, double tol_rel)
             wk = fmax(wk, fabs(c2b_curv_normal_curvature(&cb, 1, 0) - c2b_curv_normal_curvature(&cf, 1, 0)) *
                               rep.bbox_diagonal);
         }
+    /* the fit refines along v until its normal there is within 0.3 tol_rel (rad) of the
+     * blend's, by its own measure: here measured independently, at other v */
     snprintf(what, sizeof what, "%s: fitted surface's normals at the trimlines (rad)", name);
-    check_le(what, wa, 1e-6);
+    check_le(what, wa, 0.3 * tol_rel + 1e-11);
     if (n >= 3) {
         snprintf(what, sizeof what, "%s: fitted cross curvature at the trimlines (x bbox diagonal)", name);
         check_le(what, wk, 1e-6);

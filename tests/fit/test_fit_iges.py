@@ -5,7 +5,7 @@ OpenCASCADE (FreeCAD's Part.read), then compare with the analytic blend (`c2blen
  - S, S_u, S_uu at u = 0 and 1 (OCCT's getDN) against the blend's own derivatives,
    within the end-row residuals the fit reported.
 Usage: test_fit_iges.py C2BLEND EXAMPLES_DIR"""
-import json, os, random, subprocess, sys, tempfile
+import json, math, os, random, subprocess, sys, tempfile
 
 tmp = tempfile.mkdtemp(prefix="c2b_fit_iges_")
 os.environ["HOME"] = tmp  # FreeCAD writes its user configuration under HOME
@@ -76,6 +76,20 @@ for name in ["thesis_eq127_129", "nurbs_cubic_quartic", "thesis_eq130_131"]:
             check("%s: u=%d %s by OCCT within 1.25x the reported (sampled) end-row residual" % (name, side, key),
                   worst <= rep * 1.25 + 1e-12 * fit["bbox_diagonal"],
                   "max %.3g, reported %.3g (%.2g of the bbox diagonal)" % (worst, rep, worst / fit["bbox_diagonal"]))
+        # Normals along the trimline: OCCT's (from the IGES surface) vs the blend's
+        # (S_u x S_v), within the reported tilt, which the fit holds under 0.3 tol_rel.
+        worst = 0.0
+        for v, row in zip(vs, rows):
+            su, sv = FreeCAD.Vector(*row[5:8]), FreeCAD.Vector(*row[8:11])
+            nb = su.cross(sv)
+            nf = surf.getDN(side, v, 1, 0).cross(surf.getDN(side, v, 0, 1))
+            # atan2 of |cross| and dot: Vector.getAngle is an arc cosine, which cannot
+            # resolve angles below about 1.5e-8 rad
+            worst = max(worst, math.atan2(nb.cross(nf).Length, nb.dot(nf)))
+        rep = fit["tilt"]["u%d" % side]
+        check("%s: u=%d normals by OCCT within 1.25x the reported tilt and 0.3 tol_rel" % (name, side),
+              worst <= 1.25 * rep + 1e-12 and worst <= 0.3 * fit["tolerance_rel"] + 1e-11,
+              "max %.3g rad, reported %.3g" % (worst, rep))
 
 print("%d failed" % failed)
 sys.exit(1 if failed else 0)

@@ -1898,13 +1898,28 @@ def test_tessellation_takes_the_nodes_parameters():
     assert {"BSplineSurface", "Cylinder", "Plane"} <= kinds
 
 
-def _c2_then_top():
+def _c2_then_top(radius=1.0):
     """A box whose vertical edges C2Blend filleted (R = 3): its top outline runs along
     planes and the four B-spline blends, G2 to each other."""
     b = Part.makeBox(20, 20, 10)
     s = fl.fillet(b, ["Edge%d" % (i + 1) for i, e in enumerate(b.Edges)
                       if e.BoundBox.ZLength > 9], 3.0)[0]
-    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if e.BoundBox.ZMin > 9.9], 1.0
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if e.BoundBox.ZMin > 9.9], \
+        radius
+
+
+def _c2_pocket_floor():
+    """A 40 x 20 x 6 block with a 16 x 10 x 3 pocket whose vertical edges C2Blend
+    filleted (R = 2): the pocket floor's outline (concave) at R = 1."""
+    s0 = Part.makeBox(40, 20, 6).cut(Part.makeBox(16, 10, 10, V(12, 5, 3))).removeSplitter()
+
+    def inner(e):
+        return 1 < e.BoundBox.XMin and e.BoundBox.XMax < 39 and \
+            1 < e.BoundBox.YMin and e.BoundBox.YMax < 19
+    s = fl.fillet(s0, ["Edge%d" % (i + 1) for i, e in enumerate(s0.Edges)
+                       if e.BoundBox.ZLength > 2.9 and inner(e)], 2.0)[0]
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if e.BoundBox.ZMax < 3.01 and inner(e)], 1.0
 
 
 def _periodic_closure():
@@ -1919,14 +1934,21 @@ def _periodic_closure():
                if e.BoundBox.ZMin > 4.9 and not e.Degenerated], 1.0
 
 
-@pytest.mark.parametrize("make,runs", [(_c2_then_top, 8), (_periodic_closure, 7)],
-                         ids=["c2_then_top", "periodic_closure"])
+@pytest.mark.parametrize("make,runs", [
+    (_c2_then_top, 8), (lambda: _c2_then_top(2.0), 8), (_c2_pocket_floor, 8),
+    (_periodic_closure, 7)],
+    ids=["c2_then_top", "c2_then_top_R2", "c2_pocket_floor", "periodic_closure"])
 def test_runs_meeting_at_a_crease_are_sampled_finer(make, runs):
     """Where the side changes face, or crosses a knot line, the chain is cut into runs,
     each with its own pointwise blend. With the data sampled to 1e-8, the blends of two
     runs met at creases of 1.9e-7 rad (the C2-filleted box) and 2.6e-7 rad (the periodic
     pad), and OCCT's faces were kept. The runs there are now sampled to 1e-9, then 1e-10:
-    every junction must be within the G1 limit, every trimline G2, and nothing kept."""
+    every junction must be within the G1 limit, every trimline G2, and nothing kept.
+    At R = 2 on the box, and on the pocket's floor, the runs along the earlier C2 blends
+    met at 1.1e-8 to 1.5e-8 rad: the v-series' end polynomial had dropped its fourth
+    derivative (the blend's curvature rises from 0 over 17% of the run, which the fixed
+    1/64-range stencil spacing missed), and the fit did not control the normal along
+    its trimlines."""
     s, names, radius = make()
     solid, rep = fl.fillet(s, names, radius, label="Part")
     assert_valid(solid)

@@ -140,6 +140,8 @@ static double fsmooth_v(double v) { return -3 * sin(3 * v) * exp(cos(3 * v)); }
 static double farc(double v) { return 2 * cos(1 + 0.943 * v); } /* a 60 degree arc, r = 2 */
 static double farc_v(double v) { return -1.886 * sin(1 + 0.943 * v); }
 static double fhigh(double v) { return sin(150 * v) + 0.5 * v; }
+static double fbump(double v) { return 1 / (1 + 25 * v * v); }
+static double fbump_v(double v) { return -50 * v / ((1 + 25 * v * v) * (1 + 25 * v * v)); }
 
 /* The slope at both ends of open sampled data, where a blend meets the next (a fillet
  * run along a rounded outline meets the straight run's blend there, G1 to 1e-8 rad).
@@ -159,6 +161,12 @@ static void test_end_slopes(void)
         {"exp(cos 3v) on [0, 2]", fsmooth, fsmooth_v, 2.0, 3 * 2.718281828, 65, 6e-6},
         {"exp(cos 3v) on [0, 2]", fsmooth, fsmooth_v, 2.0, 3 * 2.718281828, 129, 1e-7},
         {"60 degree arc, r = 2, on [0, 1.11]", farc, farc_v, 1.11, 1.886, 65, 1e-11},
+        /* a feature 1/5 of the range wide at an end, finely sampled, like a trimline
+         * around an earlier G2 blend whose curvature rises from 0 over 17% of the run:
+         * the fourth derivative needs a stencil spacing of h or 2h; at the former
+         * fixed 1/64 of the range the two spacings disagreed, it was dropped, and the
+         * slope was off by 3.6e-7 */
+        {"1 / (1 + 25 v^2) on [0, 1]", fbump, fbump_v, 1.0, 3.25, 512, 1e-9},
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         c2b_vseries s;
@@ -179,14 +187,15 @@ static void test_end_slopes(void)
     }
 }
 
-/* Fine sampling and fast data: the fourth derivatives of the end polynomial come from a
- * stencil no finer than 1/64 of the range (rounding noise grows like h^-4) and are
- * dropped where two spacings disagree (data too fast for the stencil). Either way the
- * series stays exact to its reported error, and its polynomial part stays within 1e4
- * of the data's scale: the polynomial cancels against the sine series, and a blend
- * loses as many digits as the polynomial is larger than the data. Without the spacing
- * floor or the agreement test, the fast data's polynomial reaches 2.7e7 and 1.9e7 times
- * the data's scale. */
+/* Fine sampling and fast data: the fourth derivatives of the end polynomial come from
+ * the stencil spacing whose estimate agrees best with twice that spacing's (on fine
+ * samples rounding noise grows like h^-4), and are dropped where no two spacings agree
+ * (data too fast for the stencil) or where they would make the polynomial over 1e3
+ * times the data. Either way the series stays exact to its reported error, and its
+ * polynomial part stays within 1e4 of the data's scale: the polynomial cancels against
+ * the sine series, and a blend loses as many digits as the polynomial is larger than
+ * the data. Without the size bound, the fast data's polynomial reaches 5e7 times the
+ * data's scale. */
 static void test_end_polynomial_robust(void)
 {
     static const struct {

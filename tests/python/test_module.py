@@ -228,6 +228,10 @@ def test_fit_dict_structure():
         for key in ("residuals", "site_residuals"):
             assert list(d[key]) == ["u0", "u1"]
             assert list(d[key]["u0"]) == ["S", "S_u", "S_uu"]
+        # the fit refines along v until its normal along each trimline is within 0.3
+        # tol_rel (rad) of the blend's, less a rounding floor of about 1e-12 here
+        assert list(d["tilt"]) == ["u0", "u1"]
+        assert all(0 <= a <= 0.3e-6 + 1e-11 for a in d["tilt"].values())
         assert d["iterations"] >= 1 and d["seconds"] >= 0
         assert d["nurbs"]["periodic"] == [False, periodic]
         # The poles of the kernel's JSON form are the dict's poles.
