@@ -131,7 +131,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
 
 
 def check_solid(shape, label):
-    """Raise C2BlendError naming `label` unless shape is one closed solid, outside out."""
+    """Raise C2BlendError naming `label` unless shape is one closed solid, not inside out."""
     solids = [] if shape.isNull() else shape.Solids
     if len(solids) != 1 or len(shape.Faces) != len(solids[0].Faces):
         raise C2BlendError("the shape is a %s with %d solid(s) and %d face(s) outside "
