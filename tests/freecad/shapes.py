@@ -315,6 +315,21 @@ def spline_extrusion():
     return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
                if any(e.isSame(x) for x in top.Edges)]
 
+def partial_revolution():
+    """A profile with an interpolated cubic B-spline side, revolved 270 degrees about z:
+    the surface of revolution is only C2 across its 3 knot lines, which a fillet along
+    the profile's edge crosses obliquely. Returns (solid, name of that edge)."""
+    side = Part.BSplineCurve()
+    side.interpolate([V(10, 0, 0), V(12, 0, 5), V(8, 0, 12), V(9, 0, 18), V(6, 0, 25)])
+    w = Part.Wire([Part.LineSegment(V(3, 0, 0), V(10, 0, 0)).toShape(), side.toShape(),
+                   Part.LineSegment(V(6, 0, 25), V(3, 0, 25)).toShape(),
+                   Part.LineSegment(V(3, 0, 25), V(3, 0, 0)).toShape()])
+    s = Part.Face(w).revolve(V(0, 0, 0), V(0, 0, 1), 270)
+    rev = next(f for f in s.Faces if "Revolution" in type(f.Surface).__name__)
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if any(e.isSame(x) for x in rev.Edges) and not isinstance(e.Curve, Part.Circle)]
+    return s, names[0]
+
 def _edges_at(s, z):
     """Names of the edges of s lying in the plane z (no vertical extent)."""
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)

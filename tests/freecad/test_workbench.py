@@ -1959,6 +1959,23 @@ def test_runs_meeting_at_a_crease_are_sampled_finer(make, runs):
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
+def test_crease_at_an_oblique_knot_line_is_explained():
+    """A fillet along the profile edge of a partial revolution of a cubic B-spline: cut
+    at the surface's knot lines, its runs' blends would meet at creases of 5e-7 to
+    2.6e-6 rad. A helper's analysis: the surface's normal curvature across the fillet
+    (N d_v^2 / |d|^2, N from the profile's second derivative) changes its rate along the
+    fillet where the contact crosses a knot line obliquely, and blends smooth up to the
+    junction cannot follow that; finer data do not help. OCCT's face is kept, and the
+    reason says why (it gave only the crease)."""
+    s, edge = shapes.partial_revolution()
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Rev")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"]
+    reason = rep["kept_occt_faces"][0]["reason"]
+    assert re.search(r"would meet at a crease of [0-9.]+e-0[67] rad, which sampling their "
+                     r"data finer \(toward 1e-10\) did not remove: a face's normal curvature "
+                     r"across the fillet changes its rate along it there", reason), reason
+
 def _vertical_edges(s):
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
             if e.BoundBox.XLength < 1e-9 and e.BoundBox.YLength < 1e-9]

@@ -321,7 +321,12 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
                               % gap)
         if turn > ck.TOL_G1:
             raise NotReplaced("where a side changes face or crosses a knot line, the blends "
-                              "of the two runs would meet at a crease of %.1e rad" % turn)
+                              "of the two runs would meet at a crease of %.1e rad, which "
+                              "sampling their data finer (toward %.0e) did not remove: a "
+                              "face's normal curvature across the fillet changes its rate "
+                              "along it there (as on a face only C2 across a knot line that "
+                              "the contact crosses obliquely), which two blends, each smooth "
+                              "up to the junction, cannot follow" % (turn, JUNCTION_DATA_REL[-1]))
     for b in blends:
         b.group = blends
     return blends
