@@ -189,6 +189,18 @@ def test_scripting_misuse_raises_c2blend_errors(call, fragment):
         call(C2Blend, b, f, e)
 
 
+def test_quantities_are_numbers():
+    """A FreeCAD Quantity, as a length property gives (e.g. a C2Fillet's Radius), is a
+    radius in mm."""
+    import C2Blend
+    b = Part.makeBox(10, 10, 10)
+    a = C2Blend.fillet(b, ["Edge1"], FreeCAD.Units.Quantity("2 mm"))
+    c = C2Blend.fillet(b, ["Edge1"], 2.0)
+    assert abs(a.Volume - c.Volume) < 1e-9 * c.Volume
+    assert C2Blend.radius_for_setback(b, ["Edge1"], FreeCAD.Units.Quantity("1.5 mm")) == \
+        pytest.approx(1.5, rel=1e-12)
+
+
 def test_single_and_repeated_edges_are_one_selection():
     """A single edge (object, name or index) stands for a list of one, and an edge given
     several ways is filleted once: the report names it once."""

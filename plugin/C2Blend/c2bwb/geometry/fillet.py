@@ -31,6 +31,7 @@ import math
 import numbers
 import time
 
+import FreeCAD
 import Part
 
 from ..errors import C2BlendError, occt_message
@@ -145,8 +146,12 @@ def check_solid(shape, label):
 
 
 def positive_number(x, what, label, field=None):
-    """float(x) for a finite positive real number x (not a bool or a string); raises
-    C2BlendError naming `label`, `what` (the parameter) and x otherwise."""
+    """float(x) for a finite positive real number x (not a bool or a string), or the
+    value of a FreeCAD Quantity (in FreeCAD's internal units: mm for a length, as a
+    PropertyLength gives); raises C2BlendError naming `label`, `what` (the parameter)
+    and x otherwise."""
+    if isinstance(x, FreeCAD.Units.Quantity):
+        x = x.Value
     if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
             math.isfinite(x) and x > 0):
         raise C2BlendError("%s must be a positive number, got %r" % (what, x), label, field)
