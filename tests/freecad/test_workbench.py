@@ -1222,11 +1222,52 @@ def test_a_preview_skips_the_bop_check(monkeypatch):
     assert abs(solid.Volume - full.Volume) < 1e-9
 
 
+def test_the_continuity_is_measured_while_the_bop_check_runs(monkeypatch):
+    """The BOP check runs in the check server; the continuity measures of the solid are
+    taken meanwhile, between sending the solid and reading the check's answer, and they
+    are the same measures as taken after the check."""
+    s, edge = shapes.shaft_on_plate()
+    order = []
+    for name in ("send", "receive"):
+        real = getattr(fl.bc._Server, name)
+        monkeypatch.setattr(fl.bc._Server, name, lambda self, *a, real=real, name=name:
+                            (order.append(name), real(self, *a))[1])
+    real_measure = fl._measure
+    monkeypatch.setattr(fl, "_measure", lambda *a: (order.append("measure"),
+                                                    real_measure(*a))[1])
+    solid, rep = fl.fillet(s, [edge], 2.0, label="ShaftPlate")
+    assert order == ["send", "measure", "receive"]
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert_g2(rep)
+    st = rep["stage_seconds"]
+    assert 0 < st["continuity_check"] and 0 < st["sew_and_brepcheck"]
+    assert sum(st.values()) <= rep["seconds"]  # overlapped time is counted once
+    monkeypatch.setattr(fl.bc, "_checked", lambda shape, seconds, meanwhile=None: None)
+    again, later = fl.fillet(s, [edge], 2.0, label="ShaftPlate")
+    for key in ("trimlines", "mitres", "junctions", "corner_patches"):
+        assert later[key] == rep[key]
+
+
+def test_work_that_fails_during_a_bop_check_leaves_no_answer_behind():
+    """When the caller's work done while the server checks raises, the error is the
+    caller's, and the server's pending answer is not taken for the next check's: an
+    input that fails the check, then one that passes."""
+    bad, _ = shapes.tangent_rib()
+
+    def fails():
+        raise ValueError("the caller's own failure")
+
+    with pytest.raises(ValueError, match="the caller's own failure"):
+        fl.bc.problems(bad, meanwhile=fails)
+    assert fl.bc.problems(shapes.box()) is None
+    assert "SelfIntersect" in fl.bc.problems(bad, meanwhile=lambda: None)
+
+
 def test_an_unfinished_bop_check_is_reported(monkeypatch):
     """When the BOP check does not finish and no corner filling is to blame, the solid
     (valid by BRepCheck) is returned, and the report says that the BOP check did not
     finish, so Boolean operations on it may not finish either."""
-    def unfinished(shape, seconds):
+    def unfinished(shape, seconds, meanwhile=None):
         raise fl.bc.Unfinished("OCCT's BOP check did not finish within %.0f s" % seconds)
 
     monkeypatch.setattr(fl.bc, "_checked", unfinished)

@@ -37,13 +37,18 @@ class Unfinished(Exception):
     """The check did not finish within its time limit."""
 
 
-def problems(shape, seconds=None, bop=True):
+def problems(shape, seconds=None, bop=True, meanwhile=None):
     """What BRepCheck and OCCT's BOP argument check (BRepCheck alone when not bop) find
     wrong with `shape`, one line, each finding with its count; None when both pass.
-    Raises Unfinished when the BOP check takes longer than `seconds` (LIMIT)."""
+    meanwhile: a callable (no arguments; its result is dropped) run in this process
+    while the check server checks, so that the caller's own work overlaps the check;
+    run before the check when there is no server. Raises Unfinished when the BOP check
+    takes longer than `seconds` (LIMIT), and what meanwhile raises."""
     if bop:
-        found = _checked(shape, seconds or LIMIT)
+        found = _checked(shape, seconds or LIMIT, meanwhile)
     else:
+        if meanwhile:
+            meanwhile()
         found = _check_here(shape, False)
     if found is None:
         return None
@@ -77,12 +82,15 @@ class _Server:
             [python, SCRIPT, os.path.dirname(os.path.abspath(Part.__file__))],
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
 
-    def check(self, shape, seconds):
-        """OCCT's findings on shape, None when it passes. Raises Unfinished, and
-        OSError when the server has ended."""
+    def send(self, shape):
+        """Start checking shape. Raises OSError when the server has ended."""
         data = shape.exportBrepToString().encode()
         self.proc.stdin.write(b"%d\n" % len(data) + data)
         self.proc.stdin.flush()
+
+    def receive(self, seconds):
+        """OCCT's findings on the shape sent, None when it passes, waiting at most
+        `seconds` from now. Raises Unfinished, and OSError when the server has ended."""
         out, end, fd = b"", time.monotonic() + seconds, self.proc.stdout.fileno()
         while not out.endswith(b"\n"):
             left = end - time.monotonic()
@@ -102,28 +110,43 @@ class _Server:
 _servers = []  # the check server of this process, once started
 
 
-def _checked(shape, seconds):
+def _checked(shape, seconds, meanwhile=None):
     """The check's findings, None when it passes: by the check server, started when
-    needed, killed when the check does not finish in time, replaced once when it has
-    ended. Where no server can start, the check runs in this process, without a time
-    limit. Raises Unfinished."""
+    needed, killed when the check does not finish in time (`seconds` after meanwhile()
+    returns), replaced once when it has ended. Where no server can start, the check
+    runs in this process, without a time limit. Raises Unfinished."""
+    meanwhile = meanwhile or (lambda: None)
     for fresh in (False, True):
         if fresh or not _servers or _servers[0].proc.poll() is not None:
             _stop()
             try:
                 _servers.append(_Server())
             except OSError:
+                meanwhile()
                 return _check_here(shape, True)
             fresh = True
         try:
-            return _servers[0].check(shape, seconds)
-        except Unfinished:
-            _stop()
-            raise
-        except (OSError, ValueError):  # the server ended while checking
-            _stop()
-            if fresh:  # always so the second time round
-                raise Unfinished("OCCT's BOP check ended without a result") from None
+            _servers[0].send(shape)
+            ended = False
+        except OSError:
+            ended = True
+        if not ended:
+            try:
+                meanwhile()
+            except BaseException:
+                _stop()  # its answer would be taken for the next check's
+                raise
+            meanwhile = lambda: None  # noqa: E731 - once, whatever the server does next
+            try:
+                return _servers[0].receive(seconds)
+            except Unfinished:
+                _stop()
+                raise
+            except (OSError, ValueError):
+                pass
+        _stop()  # the server ended while checking
+        if fresh:  # always so the second time round
+            raise Unfinished("OCCT's BOP check ended without a result")
 
 
 def _stop():
