@@ -911,6 +911,35 @@ def test_a_blend_that_cannot_be_sewn_is_kept_as_occts(monkeypatch):
     assert solid.Volume == pytest.approx(box.makeFillet(2.0, [box.Edge1]).Volume, rel=1e-12)
 
 
+def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts():
+    """A spline extrusion's top outline and its four vertical edges at R = 1: four
+    corners where a top edge on the B-spline top meets two planes. At the corner at
+    x = 30, y = 0 the sewn solid failed BRepCheck, and the fillet failed with FreeCAD's
+    message, which lists the faces' own statuses: "not valid after sewing (BRepCheck
+    and BOP check: No error (13))". Now the rejected faces are named, the blends and
+    filling they belong to are kept as OCCT's fillets, and so, corner by corner, are the
+    others: a valid solid, G1, each fillet with its reason."""
+    s, _ = shapes.spline_extrusion()
+    edges = ["Edge%d" % i for i in range(5, 13)]  # the top's 4 edges, the 4 vertical
+    assert sorted(round(s.getElement(e).BoundBox.ZMin) for e in edges if
+                  s.getElement(e).BoundBox.ZLength > 9) == [0, 0, 0, 0]
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Arch")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"]
+    assert solid.Volume == pytest.approx(s.makeFillet(1.0, [s.getElement(e) for e in edges])
+                                         .Volume, rel=1e-12)
+    reasons = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
+    assert sorted(reasons) == sorted(["Arch.%s" % e for e in edges]) + sorted(
+        k for k in reasons if k.startswith("corner patch"))
+    rejected = [w for w, r in reasons.items() if r.startswith(
+        "the solid sewn with its blend is not valid: BRepCheck rejects ")]
+    assert len(rejected) >= 2, reasons
+    for w in rejected:
+        assert re.search(r"the blend face of Arch\.Edge\d+", reasons[w])
+        assert "the plate filling of the corner patch at (29.76, 0.5, 9.95)" in reasons[w]
+        assert "No error" not in reasons[w]
+
+
 def test_untraceable_contact_keeps_occt_face(monkeypatch):
     """Fault injection: Newton's method for the exact contact gets no iterations, so the
     contact cannot be traced. The fillet is not failed: OCCT's face is kept, the report

@@ -758,6 +758,19 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     inherited = _inherited(problems, orig, solid) if problems else None
     if inherited:
         problems, line = None, inherited
+    rejected = _rejected_faces(solid, blended, fills) if problems else []
+    if rejected:
+        # FreeCAD's message then lists its faces' own statuses ("No error"), not those
+        # in their context that failed
+        problems = "BRepCheck rejects %s" % ", ".join(name for name, _ in rejected)
+        # blame the blends and fillings rejected themselves, else those next to a
+        # rejected face (a face cut along several blends would blame them all)
+        own = [near for name, near in rejected if not name.startswith("face ")]
+        at = [b for b in blended if any(b is x for near in own or [n for _, n in rejected]
+                                        for x in near)]
+        if at and not orig:
+            raise Unassembled(at, "the solid sewn with its blend is not valid: %s"
+                              % problems)
     if problems:
         msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
                % problems)
@@ -766,6 +779,35 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                     "rebuild it first" % orig)
         raise C2BlendError(msg, where, "validity")
     return solid, line
+
+
+def _rejected_faces(solid, blended, fills):
+    """The faces of `solid` that BRepCheck rejects (in their own context: edges and
+    pcurves that do not fit their surface, wires that do not close), each as (what it
+    is, for messages: 'the blend face of ...', 'the plate filling of ...' or 'face
+    FaceN of ...'; the blends of `blended` it belongs to: the blend whose face it is,
+    those ending at the corner it fills, or those sharing an edge with it)."""
+    out = []
+    mine = [(b, _find_face(solid, b)) for b in blended]
+    for f in solid.Faces:
+        if f.isValid():
+            continue
+        own = next((b for b, g in mine if g.isSame(f)), None)
+        fill = next((x for x in fills if _patch_face(solid, x.patch).isSame(f)), None)
+        if own is not None:
+            name = "the blend face of %s" % own.where
+        elif fill is not None:
+            name = "the plate filling of the %s" % fill.patch.where()
+        else:
+            name = "face %s of the filleted solid" % ck.element_name(solid, f, "Face")
+        if own is not None:
+            near = [own]
+        elif fill is not None:
+            near = _at_corner(fill.patch, blended)
+        else:
+            near = [b for b, g in mine if any(e.isSame(x) for e in g.Edges for x in f.Edges)]
+        out.append((name, near))
+    return out
 
 
 def _inherited(problems, orig, solid):
