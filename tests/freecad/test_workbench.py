@@ -940,6 +940,32 @@ def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts():
         assert "No error" not in reasons[w]
 
 
+def test_blends_around_which_the_bop_check_finds_faults_are_kept_as_occts(monkeypatch):
+    """Fault injection: OCCT's BOP check finds a self-intersection wherever a B-spline
+    face is (the blend), BRepCheck passes. The findings name no face, so the blend's
+    neighbourhood is checked alone; the blend is kept as OCCT's with the finding as its
+    reason, and OCCT's solid (no B-spline face) passes. Seen for real on a spline
+    extrusion's 12 edges at R = 0.5 ("Error in Face: BOPAlgo SelfIntersect"), which
+    failed the whole fillet."""
+    def fake(shape, seconds, meanwhile=None):
+        if meanwhile:
+            meanwhile()
+        if any(isinstance(f.Surface, Part.BSplineSurface) for f in shape.Faces):
+            return "Error in Face: BOPAlgo SelfIntersect\n"
+        return None
+
+    monkeypatch.setattr(fl.bc, "_checked", fake)
+    box = shapes.box()
+    solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    (kept,) = rep["kept_occt_faces"]
+    assert kept == {"where": "Box.Edge1", "reason": "OCCT's BOP check of the solid sewn "
+                    "with its blend finds, around it: Error in Face: BOPAlgo SelfIntersect"}
+    assert rep["solid_check"] == ("OCCT's rolling-ball solid, unchanged: passes BRepCheck "
+                                  "and the BOP check")
+
+
 def test_untraceable_contact_keeps_occt_face(monkeypatch):
     """Fault injection: Newton's method for the exact contact gets no iterations, so the
     contact cannot be traced. The fillet is not failed: OCCT's face is kept, the report

@@ -59,18 +59,35 @@ def problems(shape, seconds=None, bop=True, meanwhile=None):
 
 
 def stuck(shape, faces, seconds):
-    """Those of `faces` (faces of `shape`) whose neighbourhood, the face with the faces
-    sharing an edge with it in shape's order, is not checked within `seconds`: where
-    the check of the whole shape is stuck."""
+    """Those of `faces` (faces of `shape`) whose neighbourhood is not checked within
+    `seconds`: where the check of the whole shape is stuck."""
     out = []
     for f in faces:
-        near = [g for g in shape.Faces
-                if g.isSame(f) or any(e.isSame(x) for e in f.Edges for x in g.Edges)]
         try:
-            _checked(Part.Compound(near), seconds)
+            _checked(_neighbourhood(shape, f), seconds)
         except Unfinished:
             out.append(f)
     return out
+
+
+def faulty(shape, faces, seconds):
+    """Those of `faces` (faces of `shape`) in whose neighbourhood the BOP check finds
+    something wrong (or does not finish within `seconds`): where the findings on the
+    whole shape are."""
+    out = []
+    for f in faces:
+        try:
+            if _checked(_neighbourhood(shape, f), seconds) is not None:
+                out.append(f)
+        except Unfinished:
+            out.append(f)
+    return out
+
+
+def _neighbourhood(shape, face):
+    """A compound of `face` and the faces sharing an edge with it, in shape's order."""
+    return Part.Compound([g for g in shape.Faces if g.isSame(face)
+                          or any(e.isSame(x) for e in face.Edges for x in g.Edges)])
 
 
 class _Server:

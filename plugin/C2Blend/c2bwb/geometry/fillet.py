@@ -771,6 +771,13 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         if at and not orig:
             raise Unassembled(at, "the solid sewn with its blend is not valid: %s"
                               % problems)
+    elif problems and bop and not orig:
+        # BRepCheck passes: the BOP check's findings (which name no face) are looked
+        # for around each blend and filling
+        at = _bop_faulty(solid, blended, fills)
+        if at:
+            raise Unassembled(at, "OCCT's BOP check of the solid sewn with its blend "
+                              "finds, around it: %s" % problems)
     if problems:
         msg = ("the filleted solid is not valid after sewing (BRepCheck and BOP check: %s)"
                % problems)
@@ -808,6 +815,20 @@ def _rejected_faces(solid, blended, fills):
             near = [b for b, g in mine if any(e.isSame(x) for e in g.Edges for x in f.Edges)]
         out.append((name, near))
     return out
+
+
+def _bop_faulty(solid, blended, fills):
+    """The blends of `blended` in whose neighbourhood in `solid` (the blend face, or
+    the plate filling at its corner, with the faces next to it) OCCT's BOP check finds
+    something wrong (bopcheck.faulty)."""
+    faces = [_find_face(solid, b) for b in blended]
+    fill_faces = [_patch_face(solid, f.patch) for f in fills]
+    bad = bc.faulty(solid, faces + fill_faces, bc.NEAR_LIMIT)
+    at = [b for b, g in zip(blended, faces) if any(g.isSame(x) for x in bad)]
+    for f, g in zip(fills, fill_faces):
+        if any(g.isSame(x) for x in bad):
+            at += [b for b in _at_corner(f.patch, blended) if not any(b is x for x in at)]
+    return at
 
 
 def _inherited(problems, orig, solid):
