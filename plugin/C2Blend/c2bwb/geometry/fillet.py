@@ -647,7 +647,8 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     the first solid made while OCCT's BOP check of it runs in another process (the
     solid returned may differ, when a plate filling is remade). Returns (solid, the
     report's line on its check). Raises C2BlendError, or Unassembled for the blends at
-    a corner that cannot be filled."""
+    a corner that cannot be filled and for those to which BRepCheck's or the BOP
+    check's faults belong (_rejected_faces, _bop_faulty)."""
     diag = shape.BoundBox.DiagonalLength
     tol = 1e-7 * diag
     drop = [f for b in blended for f in b.chain.faces] + [p.face for p in patches]
@@ -802,18 +803,14 @@ def _rejected_faces(solid, blended, fills):
         own = next((b for b, g in mine if g.isSame(f)), None)
         fill = next((x for x in fills if _patch_face(solid, x.patch).isSame(f)), None)
         if own is not None:
-            name = "the blend face of %s" % own.where
+            out.append(("the blend face of %s" % own.where, [own]))
         elif fill is not None:
-            name = "the plate filling of the %s" % fill.patch.where()
+            out.append(("the plate filling of the %s" % fill.patch.where(),
+                        _at_corner(fill.patch, blended)))
         else:
-            name = "face %s of the filleted solid" % ck.element_name(solid, f, "Face")
-        if own is not None:
-            near = [own]
-        elif fill is not None:
-            near = _at_corner(fill.patch, blended)
-        else:
-            near = [b for b, g in mine if any(e.isSame(x) for e in g.Edges for x in f.Edges)]
-        out.append((name, near))
+            out.append(("face %s of the filleted solid" % ck.element_name(solid, f, "Face"),
+                        [b for b, g in mine
+                         if any(e.isSame(x) for e in g.Edges for x in f.Edges)]))
     return out
 
 
@@ -1235,7 +1232,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         "volume": solid.Volume, "occt_volume": result.Volume,
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
         # the continuity check overlaps OCCT's BOP check (in another process): the
-        # stages add up to the whole time, sewing and checks being what it leaves
+        # stages count that time once, in continuity_check
         "stage_seconds": {"occt_fillet": t_occt, "trimlines_solve_fit": t_solve - t0 - t_occt,
                           "sew_and_brepcheck": t_assemble - t_solve - overlapped,
                           "continuity_check": measured["seconds"]},
