@@ -3,31 +3,42 @@
 
 OCCT closes such a vertex with a corner patch (a sphere where three equal fillets meet
 on a box) that joins each rolling-ball face along that face's circular end section. A
-PDE blend's end section is not that circle, so where every fillet at a corner is
-replaced by a blend (rollingball.CornerPatch), the patch is replaced as well: the blends
-stop at the ball's sections (ends.py) and the hole they leave in the sewn shell is
-filled by OCCT's plate filling (BRepFill_Filling through FreeCAD's Surface::Filling),
-tangent (G1 order) to the blend and face along each edge of the hole. The plate is an
-approximation: its seams are off by about 1e-6 and turn from the neighbouring faces'
-tangent planes by 1e-5 to 1e-4 rad, which the report measures. It is never claimed
+PDE blend's end section is not that circle, so where a fillet at a corner is replaced
+by a blend (rollingball.CornerPatch), the patch is replaced as well: the blends stop at
+the sections of the ball that touches the corner's three faces (ends.py), and the hole
+they leave in the sewn shell, bounded by their end sections, the end sections of the
+fillets kept as OCCT made them there, and faces, is filled by OCCT's plate filling
+(BRepFill_Filling through FreeCAD's Surface::Filling), tangent (G1 order) to the blend,
+fillet or face along each edge of the hole. The plate is an approximation: its seams
+are off by about 1e-6 and turn from the neighbouring faces' tangent planes by 1e-5 to
+1e-4 rad (up to 7e-4 on B-spline corners), which the report measures. It is never claimed
 G2, and it is not G1 in this report's strict sense (1e-8 rad).
 """
 import FreeCAD
 import Part
 
 from . import check as ck
+from .surface import angle, frame_at_point
 
-# OCCT's plate filling, degree 5 with 30 points per edge. Its approximation error
-# varies erratically with the maximum degree, corner by corner: on a box's 8 corners
-# (R = 2) the worst seam was 6.3e-5, 1.4e-4, 8.6e-5 and 7.9e-5 rad with maximum degree
-# 10, 11, 12 and 13, each corner's best being 1e-5 to 4e-5 rad; FreeCAD's default (8)
-# gave 1.6e-4 rad on one corner, and degree 3 (FreeCAD's default) 2.2e-3 rad. So each
-# maximum degree of MAX_DEGREES is tried until a seam is within GOOD_G1, keeping the
-# best.
-FILL = {"Degree": 5, "PointsOnCurve": 30, "MaximumSegments": 12, "Iterations": 2,
-        "Tolerance3d": 1e-6, "TolAngular": 1e-4}
-MAX_DEGREES = (12, 10, 13)
+# OCCT's plate filling, degree 5. Its approximation error varies erratically with the
+# maximum degree and the number of points per edge, corner by corner: on a box's 8
+# corners (R = 2, 30 points) the worst seam was 6.3e-5, 1.4e-4, 8.6e-5 and 7.9e-5 rad
+# with maximum degree 10, 11, 12 and 13, each corner's best being 1e-5 to 4e-5 rad;
+# FreeCAD's default (8) gave 1.6e-4 rad on one corner, and degree 3 (FreeCAD's default)
+# 2.2e-3 rad. On a spline extrusion's top corners (R = 1) 30 points gave 1.1e-4 to
+# 1.2e-3 rad at every degree and 40 points 2.4e-5 to 4.5e-4; at a spline block's top
+# corner 30 points gave 1.8e-4 to 1.1e-3 rad, and a plate that OCCT's BOP check finds
+# self-intersecting, at every degree from 6 to 14, and 40 points 5e-5 to 1.5e-4 rad
+# and none. So each (maximum degree, points per edge) of TRIALS is tried in turn until
+# a seam is within GOOD_G1, keeping the best: one to three on a box's corners.
+FILL = {"Degree": 5, "MaximumSegments": 12, "Iterations": 2, "Tolerance3d": 1e-6,
+        "TolAngular": 1e-4}
+TRIALS = ((12, 30), (10, 30), (13, 30), (12, 40), (10, 40), (13, 40))
 GOOD_G1 = 2e-5  # rad
+# rad: a plate turning further from the faces around its hole does not fill it (at a
+# corner where blends end 1e-4 from a fillet kept as OCCT's, one folded over, 2 rad,
+# and the solid, valid, lost 200 mm3); the worst kept corner seen is 7e-4 rad
+MAX_SEAM = 1e-2
 SEAM_POINTS = 21  # per edge, where a filling's seams are measured
 
 
@@ -55,12 +66,12 @@ def holes(shell, patches, tol):
     return out
 
 
-def fill(shell, edges, degrees=MAX_DEGREES):
-    """(face, maximum degree): the face filling the hole bounded by `edges` (free edges
-    of `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with
-    each of `degrees` tried as its maximum degree until a seam is within GOOD_G1, the
-    best kept. Built in a hidden temporary document, which is closed again; the active
-    document is left as it was. Raises Unfilled."""
+def fill(shell, edges, trials=TRIALS):
+    """(face, trial): the face filling the hole bounded by `edges` (free edges of
+    `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with each
+    (maximum degree, points per edge) of `trials` tried until a seam is within
+    GOOD_G1, the best kept. Built in a hidden temporary document, which is closed
+    again; the active document is left as it was. Raises Unfilled."""
     edges = _in_order(edges)
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
     try:
@@ -73,13 +84,12 @@ def fill(shell, edges, degrees=MAX_DEGREES):
             j = next(i for i, x in enumerate(shell.Faces) if x.isSame(f))
             names.append((holder, "Edge%d" % (k + 1)))
             faces.append("Face%d" % (j + 1))
-        best = None  # (worst seam angle, face, degree)
-        scales = {}  # the shell faces' curvature scales, shared by the degrees tried
-        for degree in degrees:
+        best = None  # (worst seam angle, face, trial)
+        for trial in trials:
             filling = doc.addObject("Surface::Filling", "Fill")
             for key, value in FILL.items():
                 setattr(filling, key, value)
-            filling.MaximumDegree = degree
+            filling.MaximumDegree, filling.PointsOnCurve = trial
             filling.BoundaryEdges = names
             filling.BoundaryFaces = faces
             filling.BoundaryOrder = [1] * len(names)  # G1: tangent to each face
@@ -88,13 +98,16 @@ def fill(shell, edges, degrees=MAX_DEGREES):
             if result.isNull() or len(result.Faces) != 1 or not result.isValid():
                 continue
             face = result.Faces[0].copy()
-            turn = _seam_angle(face, shell, edges, scales)
+            turn = _seam_angle(face, shell, edges)
             if best is None or turn < best[0]:
-                best = (turn, face, degree)
+                best = (turn, face, trial)
             if turn <= GOOD_G1:
                 break
         if best is None:
             raise Unfilled("OCCT's plate filling of its %d-sided hole failed" % len(edges))
+        if best[0] > MAX_SEAM:
+            raise Unfilled("OCCT's plate filling of its %d-sided hole turns from the faces "
+                           "around it by %.2g rad at best" % (len(edges), best[0]))
         return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
@@ -120,15 +133,17 @@ def _in_order(edges):
     return out
 
 
-def _seam_angle(face, shell, edges, scales=None):
+def _seam_angle(face, shell, edges):
     """The largest angle (rad) between the normals of a filling `face` and of the
-    shell's faces along `edges`, at SEAM_POINTS per edge (scales: check.compare's)."""
-    diag = shell.BoundBox.DiagonalLength
-    worst = 0.0
+    shell's faces along `edges`, at SEAM_POINTS per edge, with the filling turned once
+    for all to face the shell's way (where its normal agrees with the shell's over most
+    of the seam): a plate folded over along part of its seam is then about pi off there,
+    where a point-by-point choice of side would hide it."""
+    pairs = []
     for e in edges:
-        pts = [(e.valueAt(t), e.tangentAt(t), None)
-               for t in ck.sample_params(e, SEAM_POINTS)]
-        r = ck.compare(face, shell.ancestorsOfType(e, Part.Face)[0], pts, diag,
-                       oriented=False, scales=scales)
-        worst = max(worst, r["g1"])
-    return worst
+        f = shell.ancestorsOfType(e, Part.Face)[0]
+        for t in ck.sample_params(e, SEAM_POINTS):
+            p = e.valueAt(t)
+            pairs.append((frame_at_point(face, p).n, frame_at_point(f, p).n))
+    side = 1.0 if sum(a.dot(b) for a, b in pairs) >= 0.0 else -1.0
+    return max(angle(a * side, b) for a, b in pairs)

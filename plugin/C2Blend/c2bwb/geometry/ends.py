@@ -13,8 +13,10 @@ Each end of an open fillet chain is one of:
   blends together, so two blends meeting at a mitre share the edge they are cut along.
 - a junction: where one run of a chain whose side changes face meets the next
   (rollingball.Run). Both blends end at the ball's section there, which is exact.
-- a corner: where the chain meets a corner patch (rollingball.CornerPatch). The blend
-  stops at the ball's section there as computed, and corners.py fills the hole the
+- a corner: where the chain meets a corner patch (rollingball.CornerPatch). Where three
+  fillets meet, one ball touches the three faces, and each fillet ends at its section:
+  the blend stops at that ball's exact section (knots.at_corner_balls; OCCT's end
+  section is that ball's only on analytic faces), and corners.py fills the hole the
   blends leave around the patch.
 """
 import math
@@ -40,12 +42,14 @@ class ChainEnd:
     rolling-ball faces (mitres); edges: [(OCCT's end edge, the face it meets there)];
     across: True when the end is exact (see the module); junction: True where a run of
     a chain meets the next run (rollingball.Run): exact, with no face there; corner:
-    True where it meets a corner patch: exact, the patch replaced by a filling."""
+    True where it meets a corner patch: exact, the patch replaced by a filling; ball:
+    at a corner, the third face (of OCCT's result) that the ball ending the fillet
+    touches besides the chain's two sides, or None where there is not exactly one."""
 
     def __init__(self, at, junction=False):
         self.at, self.faces, self.fillets, self.edges = at, [], [], []
         self.across = self.junction = junction
-        self.corner = False
+        self.corner, self.ball = False, None
 
     def edges_on(self, face):
         """OCCT's end edges where the fillet meets `face`."""
@@ -79,8 +83,12 @@ def chain_ends(chain, fillet_faces):
             end.faces.append(nb)
             if any(nb.isSame(f) for f in fillet_faces):
                 end.fillets.append(nb)
-    for edge, _ in chain.corners:
-        nearest(edge).corner = True
+    for edge, patch in chain.corners:
+        end = nearest(edge)
+        end.corner = True
+        sides = chain.sections[-end.at].sides
+        third = [f for f in patch.touches if not any(f.isSame(s) for s in sides)]
+        end.ball = third[0] if len(third) == 1 else None
     for end in out:
         m, t = guide[end.at]
         if end.corner and not end.faces:

@@ -18,14 +18,14 @@ changes face (a rounded outline) has data only C1 along it: each run along one p
 faces gets the pointwise blend, and the runs meet at junctions (solve_runs). So do the
 pieces of a chain whose data are too rough because the contact crosses knot lines of
 a side face (solve_chain, knots.py). Where three or more fillets meet at a vertex,
-OCCT's corner patch ends their chains; when all of them are blended, the patch is
-replaced by a plate filling tangent to the blends' end sections (corners.py), measured
-and reported, never claimed G2. Kept as OCCT made them, and reported as such with the
-reason (no G2 claim is made there): chains whose side changes face where no blend is
-G2 to both faces, and chains whose exact contact, blend, fit, cut or end face's growth
-cannot be built or whose blend overshoots its faces (NotReplaced, ends.trim,
-Unassembled), with the fillets that meet them in a mitre or at a corner patch, and
-that corner patch.
+OCCT's corner patch ends their chains; when any of them is blended, the patch is
+replaced by a plate filling tangent to the blends' end sections and to the end
+sections of the fillets kept there (corners.py), measured and reported, never claimed
+G2. Kept as OCCT made them, and reported as such with the reason (no G2 claim is made
+there): chains whose side changes face where no blend is G2 to both faces, and chains
+whose exact contact, blend, fit, cut or end face's growth cannot be built or whose
+blend overshoots its faces (NotReplaced, ends.trim, Unassembled), with the fillets
+that meet them in a mitre, and the corner patches where every fillet is kept.
 """
 import math
 import numbers
@@ -41,7 +41,7 @@ from .contact import Contact, ContactError
 from . import bopcheck as bc
 from . import corners as cn
 from . import ends
-from .knots import at_face_changes, split_at_knots
+from .knots import at_corner_balls, at_face_changes, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
 from .surface import Frame, angle, frame_at_point, off_surface, project
@@ -206,6 +206,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces)
     try:
+        chain = at_corner_balls(chain, at_ends, radius)
         contact = Contact(chain, radius, ends.extension(at_ends, radius))
         blend, n, err = solve_sampled(
             lambda k: sample_rows(chain, contact, k, nrows, tension, where),
@@ -641,7 +642,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     """The solid: the faces of `result` (OCCT's fillet of `shape`) with the replaced
     rolling-ball faces dropped, the blend faces added, and every face of `shape` that a
     blend touches (sides and ends) cut anew along the blends' boundary curves; sewn,
-    with the holes left at the corner `patches` (rollingball.CornerPatch, all of whose
+    with the holes left at the corner `patches` (rollingball.CornerPatch, some of whose
     fillets are blended) filled (corners.py), made a solid and checked (bopcheck.py;
     BRepCheck only when bop is False). meanwhile(solid), when given, is called with
     the first solid made while OCCT's BOP check of it runs in another process (the
@@ -742,7 +743,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
             break
         except bc.Unfinished as ex:
             # OCCT's intersection loops: on a plate filling and a blend (seen), remade
-            # with another maximum degree where its neighbourhood's check is stuck
+            # with the next trial where its neighbourhood's check is stuck
             faces = [_patch_face(solid, f.patch) for f in fills]
             stuck = bc.stuck(solid, faces, bc.NEAR_LIMIT)
             redo = [f for f, g in zip(fills, faces) if any(g.isSame(x) for x in stuck)]
@@ -846,7 +847,7 @@ def _inherited(problems, orig, solid):
 
 class _Fill:
     """The plate filling (face) of a corner patch's hole (edges loop of the open
-    shell), with the maximum degrees tried (corners.fill). Raises Unassembled for
+    shell), with the trials tried (corners.fill). Raises Unassembled for
     `blends`, those ending there, when the hole cannot be filled."""
 
     def __init__(self, shell, patch, loop, blends):
@@ -857,17 +858,17 @@ class _Fill:
                               % (patch.where(), self.error))
 
     def refill(self):
-        """Fill again with the maximum degrees not yet tried; False when none is left
-        or none gives a face (error says why)."""
-        left = [d for d in cn.MAX_DEGREES if d not in self.tried]
+        """Fill again with the trials not yet tried; False when none is left or none
+        gives a face (error says why)."""
+        left = [t for t in cn.TRIALS if t not in self.tried]
         if not left:
             return False
         try:
-            self.face, degree = cn.fill(self.shell, self.loop, left)
+            self.face, trial = cn.fill(self.shell, self.loop, left)
         except cn.Unfilled as ex:
             self.error = str(ex)
             return False
-        self.tried.append(degree)
+        self.tried.append(trial)
         return True
 
 
@@ -919,11 +920,6 @@ def _sewn(faces):
 def _at_corner(patch, blended):
     """The blends of `blended` that replace fillets ending at the corner patch."""
     return [b for b in blended if any(b.source is c for c in patch.chains)]
-
-
-def _fillable(patch, blended):
-    """True when every fillet at the corner patch is blended, so it can be filled."""
-    return all(any(b.source is c for b in blended) for c in patch.chains)
 
 
 def _corner_check(solid, patch, scales):
@@ -1185,12 +1181,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         measured.update(solid=solid, checks=checks, seconds=time.perf_counter() - t)
 
     while True:  # a blend that cannot be cut back or cut into its faces is kept as OCCT's
-        filled = [p for p in patches if _fillable(p, blended)]
-        failed = [(b, "it ends at the %s, where a fillet is kept as OCCT made it, so OCCT's "
-                   "patch and this fillet are kept too" % p.where())
-                  for p in patches if not any(p is q for q in filled)
-                  for b in _at_corner(p, blended)] \
-            or ends.trim(blended, lambda f: _original(shape, f))
+        filled = [p for p in patches if _at_corner(p, blended)]
+        failed = ends.trim(blended, lambda f: _original(shape, f))
         if not failed:
             t_solve = t_solve or time.perf_counter()
             try:
@@ -1216,8 +1208,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
         measured["seconds"] = time.perf_counter() - t_assemble
     checks, corner_checks = measured["checks"]["trimlines"], measured["checks"]["corner_patches"]
     kept += [{"where": p.where(), "reason": "OCCT's corner patch, kept with the fillets "
-              "that meet there"} for p in patches if not blended
-             or not any(p is q for q in filled)]
+              "that meet there"} for p in patches if not any(p is q for q in filled)]
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,

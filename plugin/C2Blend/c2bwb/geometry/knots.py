@@ -13,12 +13,16 @@ rough is cut at the crossings into runs, as a chain whose side changes face is
 Where a side changes face, the runs must end where the exact contact crosses the edge
 between the two faces, not at OCCT's split between its fillet faces: on B-spline walls
 OCCT splits 1e-2 away from it, and the two runs' end sections would not meet
-(at_face_changes).
+(at_face_changes). Likewise, where three fillets meet at a corner, each ends where the
+exact ball also touches the corner's third face (at_corner_balls).
 """
+import math
+
 import Part
 
 from .contact import Contact
 from .rollingball import Run, Section
+from .surface import Frame
 
 MAX_ROOT = 60  # iterations of the bracketed root finder (each halves the bracket at worst)
 
@@ -136,6 +140,7 @@ def crossings(contact, k):
 
 
 MAX_SHIFT = 0.5  # a junction moves by at most this fraction of its runs' end sections
+BALL_GAP = 1e-2  # OCCT's corner ball is this close (times R) to the exact one, or unrelated
 
 
 def _secant(f, a0, a1):
@@ -159,25 +164,70 @@ def _shared_edge(f, g, near):
     return min(common, key=lambda e: e.distToShape(near)[0], default=None)
 
 
+def _end_where(run, at_end, radius, f, near=math.inf):
+    """The guide parameter of the section of run at its end (at_end) or start at which
+    f(exact contact: p1, p2, c, t) is 0, by the secant method from OCCT's end, or None
+    when not found within MAX_SHIFT of that section, or when |f| at OCCT's end exceeds
+    near (a length, like f)."""
+    sec = run.sections[-1 if at_end else 0]
+    contact = Contact(Run([sec], (True, True), ends=[], corners=[]), radius, arc_length=False)
+    a0 = sec.a_end if at_end else sec.a_start
+    span = sec.a_end - sec.a_start
+    g = lambda a: f(*contact.solve(0, a)[:4])  # noqa: E731
+    if abs(g(a0)) > near:
+        return None
+    a = _secant(g, a0, a0 - 1e-3 * span if at_end else a0 + 1e-3 * span)
+    if a is None or abs(a - a0) > MAX_SHIFT * abs(span):
+        return None
+    return a
+
+
 def _crossing(run, at_end, side, edge, radius):
     """The guide parameter of the section of run at its end (at_end) or start at which
     the exact contact on side `side` crosses edge (the edge's curve, extended), or None.
     The offset of the contact from that curve along the spine changes sign there."""
-    sec = run.sections[-1 if at_end else 0]
-    contact = Contact(Run([sec], (True, True), ends=[], corners=[]), radius, arc_length=False)
     curve = edge.Curve
 
-    def offset(a):
-        p1, p2, _, t, _, _ = contact.solve(0, a)
+    def offset(p1, p2, c, t):
         p = (p1, p2)[side]
         return (p - curve.value(curve.parameter(p))).dot(t)
 
-    a0 = sec.a_end if at_end else sec.a_start
-    span = sec.a_end - sec.a_start
-    a = _secant(offset, a0, a0 - 1e-3 * span if at_end else a0 + 1e-3 * span)
-    if a is None or abs(a - a0) > MAX_SHIFT * abs(span):
-        return None
-    return a
+    return _end_where(run, at_end, radius, offset)
+
+
+def _ball_gap(face):
+    """g(p1, p2, c, t): the signed distance of a ball centre c from the surface of
+    `face` (along its normal, oriented like the face)."""
+    s = face.Surface
+
+    def gap(p1, p2, c, t):
+        u, v = s.parameter(c)
+        f = Frame(face, u, v, s)
+        return (c - f.p).dot(f.n)
+
+    return gap
+
+
+def at_corner_balls(run, at_ends, radius):
+    """run (a chain or Run) with each end at a corner patch where three fillets meet
+    (ends.ChainEnd.ball set) moved to where the exact ball also touches the third face:
+    the ball that ends all three fillets, so that their blends' end sections meet at
+    its contact points. OCCT's corner lies there on analytic faces but 1e-4 away on a
+    B-spline wall (R = 1), which left a hole with a 1e-4 edge that OCCT's plate filling
+    could not fill. An end stays where it is when OCCT's end ball is more than
+    BALL_GAP * radius from touching the third face (a corner where convex and concave
+    edges meet: no ball touches the three faces there; one found anyway lay 0.35 mm
+    along a boss's rim at R = 1 and left the blends unsewable), or when that ball is
+    not found within MAX_SHIFT of its section. Raises contact.ContactError."""
+    for end in at_ends:
+        if end.ball is None:
+            continue
+        gap = _ball_gap(end.ball)
+        a = _end_where(run, end.at == 1, radius, lambda *x: abs(gap(*x)) - radius,
+                       near=BALL_GAP * radius)
+        if a is not None:
+            run = _moved(run, -end.at, a)
+    return run
 
 
 def at_face_changes(runs, closed, radius):

@@ -93,10 +93,13 @@ class RollingBallFace:
     ends: [(edge, neighbour face)] (empty for a closed fillet): faces met at an angle,
     end faces of the solid or other fillets (mitres);
     links: [(edge, fillet face)], tangent joins to other rolling-ball faces of a chain;
-    corners: [(edge, corner patch face)], tangent joins to corner patches (chains());
+    corners: [(edge, corner patch)], tangent joins to corner patches (chains(); the
+    patch's RollingBallFace);
     corner: None, or a string saying why the face cannot be replaced (corner patch).
     patch: True for a corner patch: a face with two or more tangent joins to other
-    rolling-ball faces but not two contacts (where three fillets meet at a vertex).
+    rolling-ball faces but not two contacts (where three fillets meet at a vertex);
+    touches: a corner patch's faces of the solid (not fillets) that share a vertex
+    with it, [] for a fillet.
     along: 0 or 1, the surface parameter along the fillet; range: its range on the face;
     across: (c1, c2), the across-parameters of the two contacts.
     """
@@ -123,6 +126,14 @@ class RollingBallFace:
                 self.ends.append((e, nb))
                 met += 1 if is_fillet else 0
         self.patch = len(self.contacts) != 2 and len(self.links) >= 2
+        # a corner patch's faces of the solid (not fillets) that it touches at a vertex:
+        # where three fillets meet, the ball touching all three faces ends each fillet
+        self.touches = []
+        if self.patch:
+            for v in face.Vertexes:
+                for f in result.ancestorsOfType(v, Part.Face):
+                    if not any(f.isSame(g) for g in fillet_faces + self.touches):
+                        self.touches.append(f)
         if self.corner is None and len(self.contacts) != 2 and met >= 2 and not self.patch:
             self.corner = ("it is OCCT's face between %d fillets at a vertex, which it "
                            "meets at an angle, not tangent: no corner patch that a filling "
@@ -201,8 +212,8 @@ def _same_sides(a, b):
 class FilletChain:
     """Rolling-ball faces joined tangentially end to end: one blend, or one per run.
 
-    Attributes: faces; ends: [(edge, neighbour face)]; corners: [(edge, corner patch
-    face)], ends at corner patches; closed; corner: None or why the chain is kept;
+    Attributes: faces; ends: [(edge, neighbour face)]; corners: [(edge, corner patch's
+    RollingBallFace)], ends at corner patches; closed; corner: None or why the chain is kept;
     junctions: (False, False), see Run. When corner is None: sections, the members in
     order with their direction; sides: (F1, F2), the faces touched along side 1 and
     side 2 by the first section; runs: None when every section touches the same two
@@ -316,11 +327,11 @@ class Run:
 class CornerPatch:
     """OCCT's corner patch where three or more fillets meet at a vertex (a
     RollingBallFace with patch set): face; chains: the FilletChains ending at it. It is
-    replaced by a filling (corners.py) when every one of those chains is blended."""
+    replaced by a filling (corners.py) when any of those chains is blended."""
 
     def __init__(self, rbf, chains_):
         self.face = rbf.face
-        self.chains = [c for c in chains_ if any(f.isSame(self.face) for _, f in c.corners)]
+        self.chains = [c for c in chains_ if any(p is rbf for _, p in c.corners)]
 
     def where(self):
         """'corner patch at (x, y, z)', for messages."""
@@ -336,7 +347,11 @@ def chains(rbfs):
     for r in rbfs:
         joins, r.links = r.links, []
         for e, nb in joins:
-            (r.corners if any(nb.isSame(p.face) for p in patches) else r.links).append((e, nb))
+            patch = next((p for p in patches if nb.isSame(p.face)), None)
+            if patch is None:
+                r.links.append((e, nb))
+            else:
+                r.corners.append((e, patch))
     groups = []
     for r in rbfs:
         linked = [g for g in groups if any(nb.isSame(m.face) for m in g for _, nb in r.links)]
