@@ -21,7 +21,6 @@
 
 #include "approx_examples.h"
 #include "c2b_atomic.h"
-#include "cheb_bvp.h"
 #include <lapacke.h>
 
 typedef struct out {
@@ -326,44 +325,6 @@ static int seed001_table(out *o)
     return 0;
 }
 
-/* Independent reference for eqs. 127-129: each of x, y is G(u) times sin/cos(2 pi v), G from
- * the Chebyshev collocation oracle; z is the quintic Hermite polynomial of its constants. */
-static int oracle_surface(const ex_thesis *x, size_t n, const double *u, const double *v, double *s)
-{
-    double beta = -4 * C2B_PI * C2B_PI, c[4] = {1, beta, beta * beta, beta * beta * beta};
-    double *G = malloc(sizeof(double) * 4 * n * 2);
-    for (int cc = 0; cc < 2; cc++) {
-        double d[6] = {0};
-        for (int side = 0; side < 2; side++)
-            for (int p = 0; p < 2; p++) {
-                const ex_trig *tr = &x->trig[cc][side][p];
-                d[3 * side + p] = tr->a0 + tr->a1 * exp(tr->s * x->t);
-            }
-        if (oracle_cheb_bvp(3, c, -1, NULL, d, 0, (int)n, u, G + 4 * n * cc, NULL))
-            return 1;
-    }
-    double zc[6];
-    for (int l = 0; l < 6; l++)
-        zc[l] = x->zc[l / 3][l % 3].c;
-    for (size_t i = 0; i < n; i++) {
-        double t = u[i], t2 = t * t, t3 = t2 * t;
-        double g[6] = {1 - 10 * t3 + 15 * t2 * t2 - 6 * t3 * t2, (1 - 6 * t2 + 8 * t3 - 3 * t2 * t2) * t,
-                       (0.5 - 1.5 * t + 1.5 * t2 - 0.5 * t3) * t2, (10 - 15 * t + 6 * t2) * t3,
-                       (-4 + 7 * t - 3 * t2) * t3, (0.5 - t + 0.5 * t2) * t3};
-        double z = 0;
-        for (int l = 0; l < 6; l++)
-            z += zc[l] * g[l];
-        for (size_t j = 0; j < n; j++) {
-            double *p = s + 3 * (i * n + j);
-            p[0] = G[4 * i] * sin(2 * C2B_PI * v[j]);
-            p[1] = G[4 * n + 4 * i] * cos(2 * C2B_PI * v[j]);
-            p[2] = z;
-        }
-    }
-    free(G);
-    return 0;
-}
-
 /* Time-dependent data with 64 modes: sum_{k=1..64} cos(k t + phase) / k^2 sin(2 pi k v + phase).
  * The t-factors are cached per frame and sin(k x) runs by the angle-addition recurrence,
  * so the frame time measures the kernel, not 128 libm calls per sample. */
@@ -403,7 +364,7 @@ static int ratios_table(out *o)
     static double u[NE], v[NE], orc[NE * NE * 3], ex[NE * NE * 3], ap[NE * NE * 3];
     ex_linspace(NE, 0, 1, u);
     ex_linspace(NE, 0, 1, v);
-    if (oracle_surface(&x, NE, u, v, orc)) {
+    if (ex_oracle_surface(&x, NE, u, v, orc)) {
         fprintf(stderr, "compare: oracle failed\n");
         return 1;
     }

@@ -8,6 +8,8 @@
 
 #include "c2b_constants.h"
 #include "c2b_lsq.h"
+#include "c2b_mode.h"
+#include "c2b_operator.h"
 #include "c2b_poly.h"
 
 #define NDATA 3 /* constraints per trimline for C2 */
@@ -15,6 +17,7 @@
 
 typedef struct dsol {
     c2b_approx_group group;
+    c2b_mode *closed;        /* group 2 in closed form (group2_closed): owned, else NULL */
     int rank;
     double c[C2B_APPROX_MAX_M];
     double resid_ss;         /* residual sum of squares of the fit, over resid_n points */
@@ -42,7 +45,7 @@ struct c2b_approx {
 
 c2b_approx_options c2b_approx_options_default(void)
 {
-    c2b_approx_options o = {20, 100, 100, 1e-13, 1e-12, C2B_APPROX_DIFFERENTIAL};
+    c2b_approx_options o = {20, 100, 100, 1e-13, 1e-12, C2B_APPROX_DIFFERENTIAL, 0};
     return o;
 }
 
@@ -81,10 +84,16 @@ static void free_work(c2b_approx *a)
     a->phi = a->gk = a->fv = a->A = a->b = NULL;
 }
 
+/* Each datum term of sol, in order (count C2B_NCOMP * 2 * NDATA * NPART). */
+#define SOL_TERMS(sol) (&(sol)[0][0][0][0])
+#define NTERMS (C2B_NCOMP * 2 * NDATA * NPART)
+
 void c2b_approx_destroy(c2b_approx *a)
 {
     if (!a)
         return;
+    for (int e = 0; e < NTERMS; e++)
+        c2b_mode_destroy(SOL_TERMS(a->sol)[e].closed);
     free_work(a);
     free(a);
 }
@@ -170,15 +179,30 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, int part, d
         return C2B_OK;
     }
     s->group = C2B_APPROX_SERIES;
+    double beta = 0;
     if (beta_den > 0) {
-        double beta = beta_num / beta_den, dev = 0;
+        double dev = 0;
+        beta = beta_num / beta_den;
         for (int j = 0; j <= NJ; j++)
             dev = fmax(dev, fabs(a->fv[4 * j + 1] - beta * a->fv[4 * j]));
         if (dev <= 1e3 * a->opt.zero_rel * fmax(d2, 1e-300))
             s->group = C2B_APPROX_MODE;
     }
-    /* Residual rows (eq. 123): alpha_m(u_i, v_j), rhs phi(u_i, v_j) (eq. 122). */
+    char what[96];
+    snprintf(what, sizeof what, "thesis-approx: datum %c, side %d, order %d%s%s", "xyz"[c], side, p,
+             a->nparts > 1 ? ", " : "", a->nparts > 1 ? PART_NAME[part] : "");
     const double *sh = a->shape[c];
+    if (s->group == C2B_APPROX_MODE && a->opt.group2_closed) {
+        /* H_l: the mode ODE's response to unit datum l (thesis section 3.4.1, group 2) */
+        c2b_operator op;
+        c2b_status st = c2b_operator_init(&op, C2B_C2, sh, 4, err);
+        if (!st)
+            st = c2b_mode_create(&op, beta, NULL, &s->closed, err);
+        if (st)
+            c2b_error_prefix(err, "%s (closed form, beta = %g): ", what, beta);
+        return st;
+    }
+    /* Residual rows (eq. 123): alpha_m(u_i, v_j), rhs phi(u_i, v_j) (eq. 122). */
     const long rows = (long)(NI + 1) * (NJ + 1);
     for (int i = 0; i <= NI; i++) {
         const double *ph = a->phi + (size_t)i * 4 * M;
@@ -194,9 +218,6 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, int part, d
                       sh[2] * gl[1 * 6 + l] * fj[2] + sh[3] * gl[l] * fj[3];
         }
     }
-    char what[96];
-    snprintf(what, sizeof what, "thesis-approx: datum %c, side %d, order %d%s%s", "xyz"[c], side, p,
-             a->nparts > 1 ? ", " : "", a->nparts > 1 ? PART_NAME[part] : "");
     int rank = 0;
     double rs = 0;
     c2b_status st = c2b_lsq_solve(rows, M, a->A, a->b, a->opt.rcond, s->c, &rank, &rs, what, err);
@@ -215,6 +236,7 @@ static c2b_status solve_datum(c2b_approx *a, int c, int side, int p, int part, d
 static c2b_status solve_all(c2b_approx *a, double t, int only_time_dependent, c2b_error *err)
 {
     dsol tmp[C2B_NCOMP][2][NDATA][NPART];
+    int redone[NTERMS] = {0}; /* terms solved anew: their closed-form modes are tmp's own */
     double mean_prev[C2B_NCOMP][2][NDATA];
     memcpy(tmp, a->sol, sizeof tmp);
     memcpy(mean_prev, a->mean, sizeof mean_prev);
@@ -235,12 +257,19 @@ static c2b_status solve_all(c2b_approx *a, double t, int only_time_dependent, c2
                     if (only_time_dependent &&
                         (!a->data.f[c][side][p].time_dependent || part == 1))
                         continue;
+                    redone[&tmp[c][side][p][part] - SOL_TERMS(tmp)] = 1;
                     c2b_status st = solve_datum(a, c, side, p, part, t, &tmp[c][side][p][part], err);
                     if (st) {
+                        for (int e = 0; e < NTERMS; e++)
+                            if (redone[e])
+                                c2b_mode_destroy(SOL_TERMS(tmp)[e].closed);
                         memcpy(a->mean, mean_prev, sizeof mean_prev);
                         return st;
                     }
                 }
+    for (int e = 0; e < NTERMS; e++)
+        if (redone[e])
+            c2b_mode_destroy(SOL_TERMS(a->sol)[e].closed);
     memcpy(a->sol, tmp, sizeof tmp);
     a->t = t;
     return C2B_OK;
@@ -356,9 +385,15 @@ c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u,
             for (int e = 0; e < nt; e++) {
                 int l = e / a->nparts;
                 const dsol *s = &a->sol[c][l / NDATA][l % NDATA][e % a->nparts];
+                double hc[4] = {0};
+                if (s->closed) {
+                    double unit[2 * NDATA] = {0};
+                    unit[l] = 1.0;
+                    c2b_mode_eval(s->closed, unit, u[i], order, hc);
+                }
                 for (int k = 0; k < nk; k++) {
-                    double h = gd[l][k];
-                    if (s->group >= C2B_APPROX_MODE)
+                    double h = s->closed ? hc[k] : gd[l][k];
+                    if (s->group >= C2B_APPROX_MODE && !s->closed)
                         for (int m = 0; m < M; m++)
                             h -= s->c[m] * ph[m][k];
                     hu[((i * C2B_NCOMP + c) * nt + e) * nk + k] = s->group ? h : 0.0;
@@ -403,7 +438,7 @@ c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, i
     const dsol *s = &a->sol[c][side][p][part];
     if (coef)
         for (int m = 0; m < a->opt.M; m++)
-            coef[m] = s->group >= C2B_APPROX_MODE ? s->c[m] : 0.0;
+            coef[m] = s->group >= C2B_APPROX_MODE && !s->closed ? s->c[m] : 0.0;
     if (rank)
         *rank = s->rank;
     return s->group;

@@ -12,8 +12,10 @@
  *        f_m = g_2 + (-1)^m g_5,
  *    whose correction terms vanish with their first two u-derivatives at u = 0 and 1,
  *    so the boundary data hold exactly. Data with C_l'' = beta C_l (group 2) are
- *    detected and reported, but solved with eq. 120 as the thesis does for its Tables 1
- *    and 3 (their closed form is what c2b_blend computes).
+ *    detected and reported. By default they are solved with eq. 120, as the thesis
+ *    does for its Tables 1 and 3; with group2_closed they take their closed form
+ *    instead (section 3.4.1's group 2): H_l is the mode transfer function of
+ *    c2b_mode.h for that beta, exact for any M.
  *  - C2B_APPROX_DECOMPOSITION (section 3.3, eqs. 59-86): every datum is split into
  *    C^(1) + C^(2)(t) + C^(3)(v) + C^(4)(v, t) (eq. 59), with <C>(t) the mean over v
  *    and t0 the creation time: part 0 = <C>(t) (constants and t-only, eqs. 64, 69)
@@ -57,10 +59,11 @@ typedef struct c2b_approx_options {
     double rcond;     /**< dgelsy rank threshold (default 1e-13) */
     double zero_rel;  /**< |C''| or |C'| below zero_rel * max|C| on the grid counts as 0 (1e-12) */
     c2b_approx_approach approach;
+    int group2_closed; /**< 1: group 2 data take their closed form; 0: eq. 120 (default) */
 } c2b_approx_options;
 
 /** Defaults: M = 20, I = J = 100 (the thesis' settings), rcond 1e-13, zero_rel 1e-12,
- *  the differential-property approach. */
+ *  the differential-property approach, group 2 data solved with eq. 120. */
 c2b_approx_options c2b_approx_options_default(void);
 
 typedef struct c2b_approx c2b_approx;
@@ -69,7 +72,8 @@ typedef struct c2b_approx c2b_approx;
 typedef enum c2b_approx_group {
     C2B_APPROX_ZERO = 0,     /**< identically zero: no term */
     C2B_APPROX_HERMITE = 1,  /**< exact quintic Hermite term (group 1 / C^(1), C^(2)) */
-    C2B_APPROX_MODE = 2,     /**< C'' = beta C (group 2), solved by least squares */
+    C2B_APPROX_MODE = 2,     /**< C'' = beta C (group 2): least squares, or closed form
+                                  with group2_closed */
     C2B_APPROX_SERIES = 3    /**< general function (group 3 / C^(3), C^(4)), least squares */
 } c2b_approx_group;
 
@@ -81,7 +85,8 @@ typedef enum c2b_approx_group {
  *         names the option: "M", "collocation"); C2B_ERR_SPEC for gamma = 0, non-finite
  *         shape parameters or non-finite data (naming component, side and order);
  *         C2B_ERR_NUMERIC when the least-squares problem is rank deficient or dgelsy
- *         fails; C2B_ERR_NOMEM.
+ *         fails, or when a group 2 datum's closed form is resonant (group2_closed);
+ *         C2B_ERR_NOMEM.
  */
 c2b_status c2b_approx_create(const double shape[C2B_NCOMP][5], const c2b_vdomain *dom,
                              const c2b_vdata *data, double t, const c2b_approx_options *opt,
@@ -105,7 +110,8 @@ c2b_status c2b_approx_eval_grid(const c2b_approx *a, size_t nu, const double *u,
 
 /** The treatment of term `part` of datum (component c, side, order p) and, for
  *  least-squares terms, the coefficients c_1..c_M (coef may be NULL; it receives M
- *  values, zeros otherwise) and the numerical rank (rank may be NULL). part is 0 in
+ *  values, zeros otherwise, as for a group 2 datum in closed form) and the numerical
+ *  rank (rank may be NULL; 0 for terms without least squares). part is 0 in
  *  the differential approach and 0..2 (constant and t-only, v-only, (v, t)) in the
  *  decomposition. Returns C2B_APPROX_ZERO for indices out of range. */
 c2b_approx_group c2b_approx_datum(const c2b_approx *a, int c, int side, int p, int part,

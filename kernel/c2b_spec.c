@@ -626,7 +626,7 @@ static c2b_status parse_force(c2b_spec *s, const cJSON *j, c2b_error *err)
 }
 
 
-/* "solver", "M", "N", "collocation", "approach" (docs/APPROX.md). */
+/* "solver", "M", "N", "collocation", "approach", "group2" (docs/APPROX.md). */
 static c2b_status parse_solver(c2b_spec *s, const cJSON *root, c2b_error *err)
 {
     const cJSON *j = cJSON_GetObjectItemCaseSensitive(root, "solver");
@@ -671,6 +671,14 @@ static c2b_status parse_solver(c2b_spec *s, const cJSON *root, c2b_error *err)
         if (!cJSON_IsString(j) || (strcmp(j->valuestring, "differential") && strcmp(j->valuestring, "decomposition")))
             return c2b_error_set(err, C2B_ERR_SPEC, "approach: expected \"differential\" or \"decomposition\"");
         s->solver.approach = !strcmp(j->valuestring, "decomposition");
+    }
+    j = cJSON_GetObjectItemCaseSensitive(root, "group2");
+    if (j) {
+        if (!cJSON_IsString(j) || (strcmp(j->valuestring, "series") && strcmp(j->valuestring, "closed")))
+            return c2b_error_set(err, C2B_ERR_SPEC, "group2: expected \"series\" or \"closed\"");
+        if (s->solver.kind != C2B_SOLVER_THESIS_APPROX)
+            return c2b_error_set(err, C2B_ERR_SPEC, "group2: only valid with \"solver\": \"thesis-approx\"");
+        s->solver.group2_closed = !strcmp(j->valuestring, "closed");
     }
     if (s->solver.kind == C2B_SOLVER_EXACT &&
         (s->solver.M || s->solver.N || s->solver.ci || cJSON_GetObjectItemCaseSensitive(root, "approach")))
@@ -783,7 +791,7 @@ static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
     static const char *const keys[] = {"name", "description", "source", "continuity", "shape",
                                        "v_range", "periodic", "constants", "time", "primaries",
                                        "boundary", "force", "tolerance", "solver", "M", "N",
-                                       "collocation", "approach", "curves", NULL};
+                                       "collocation", "approach", "group2", "curves", NULL};
     c2b_status st = check_keys(root, "", keys, err);
     if (st)
         return st;

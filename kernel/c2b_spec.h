@@ -79,9 +79,11 @@ typedef struct c2b_spec_solver {
     int M, N;              /**< "M" (both), "N" (pseudo-navier) */
     int ci, cj;            /**< "collocation": [I, J] */
     int approach;          /**< "approach": 0 "differential" (default), 1 "decomposition" */
+    int group2_closed;     /**< "group2": 0 "series" (default), 1 "closed" (thesis-approx) */
 } c2b_spec_solver;
 
-/** The spec's "solver", "M", "N", "collocation" and "approach" (zeros when absent). */
+/** The spec's "solver", "M", "N", "collocation", "approach" and "group2" (zeros when
+ *  absent). */
 c2b_spec_solver c2b_spec_solver_settings(const c2b_spec *s);
 
 /**

@@ -65,6 +65,7 @@ c2b_status c2b_surface_create(c2b_spec *s, double t, c2b_surface **out, c2b_erro
             if (so.ci)
                 o.ci = so.ci, o.cj = so.cj;
             o.approach = so.approach ? C2B_APPROX_DECOMPOSITION : C2B_APPROX_DIFFERENTIAL;
+            o.group2_closed = so.group2_closed;
             st = c2b_approx_create(pb.shape, &pb.dom, &sf->vd, t, &o, &sf->approx, err);
         }
     }

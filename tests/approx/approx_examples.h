@@ -19,6 +19,7 @@
 #include "c2b_blend.h"
 #include "c2b_navier.h"
 #include "c2b_spec.h"
+#include "cheb_bvp.h"
 
 #ifndef C2B_EXAMPLES_DIR
 #error "define C2B_EXAMPLES_DIR"
@@ -204,6 +205,53 @@ static inline void ex_thesis_init(ex_thesis *x, int which)
         for (int j = 0; j < 4; j++)
             x->shape[k][j] = 1.0;
     x->dom.v0 = 0, x->dom.v1 = 1, x->dom.periodic = 1;
+}
+
+/* Independent reference for the thesis examples (ex_thesis_init): each of x, y is G(u)
+ * times sin/cos(2 pi v), G from the Chebyshev collocation oracle (tests/oracle) for the
+ * mode beta = -(2 pi)^2; z is the quintic Hermite polynomial of its constants (thesis
+ * eq. 18). s receives n x n points (u_i, v_j) at s[3 (i n + j) + c]. Returns 0, or 1
+ * when the oracle fails. */
+static inline int ex_oracle_surface(const ex_thesis *x, size_t n, const double *u, const double *v,
+                                    double *s)
+{
+    double beta = -4 * C2B_PI * C2B_PI, c[4] = {1, beta, beta * beta, beta * beta * beta};
+    double *G = malloc(sizeof(double) * 4 * n * 2);
+    if (!G)
+        return 1;
+    for (int cc = 0; cc < 2; cc++) {
+        double d[6] = {0};
+        for (int side = 0; side < 2; side++)
+            for (int p = 0; p < 2; p++) {
+                const ex_trig *tr = &x->trig[cc][side][p];
+                if (x->vd.f[cc][side][p].fn) /* the cylinders have no u-derivative data */
+                    d[3 * side + p] = tr->a0 + tr->a1 * exp(tr->s * x->t);
+            }
+        if (oracle_cheb_bvp(3, c, -1, NULL, d, 0, (int)n, u, G + 4 * n * cc, NULL)) {
+            free(G);
+            return 1;
+        }
+    }
+    double zc[6];
+    for (int l = 0; l < 6; l++)
+        zc[l] = x->zc[l / 3][l % 3].c;
+    for (size_t i = 0; i < n; i++) {
+        double t = u[i], t2 = t * t, t3 = t2 * t;
+        double g[6] = {1 - 10 * t3 + 15 * t2 * t2 - 6 * t3 * t2, (1 - 6 * t2 + 8 * t3 - 3 * t2 * t2) * t,
+                       (0.5 - 1.5 * t + 1.5 * t2 - 0.5 * t3) * t2, (10 - 15 * t + 6 * t2) * t3,
+                       (-4 + 7 * t - 3 * t2) * t3, (0.5 - t + 0.5 * t2) * t3};
+        double z = 0;
+        for (int l = 0; l < 6; l++)
+            z += zc[l] * g[l];
+        for (size_t j = 0; j < n; j++) {
+            double *p = s + 3 * (i * n + j);
+            p[0] = G[4 * i] * sin(2 * C2B_PI * v[j]);
+            p[1] = G[4 * n + 4 * i] * cos(2 * C2B_PI * v[j]);
+            p[2] = z;
+        }
+    }
+    free(G);
+    return 0;
 }
 
 /* ---- seed 001 eq. 17 ---- */

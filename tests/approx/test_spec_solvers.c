@@ -39,6 +39,26 @@ int main(void)
         c2b_surface_destroy(sf);
         c2b_spec_destroy(sp);
     }
+    /* "group2": "closed": the spec's group 2 data take their closed form, as through the API */
+    {
+        c2b_spec *sp = ex_spec("thesis_eq127_129_approx.json", "\"M\": 20,", "\"M\": 20, \"group2\": \"closed\",");
+        c2b_surface *sf = NULL;
+        ex_linspace(NG, 0, 1, v);
+        if (check_true("\"group2\": \"closed\" solves", sp && !c2b_surface_create(sp, 0.1, &sf, &err))) {
+            ex_thesis x;
+            ex_thesis_init(&x, 0);
+            static double p[NG * NG * 3], q[NG * NG * 3];
+            c2b_surface_eval_grid(sf, NG, u, NG, v, 0, p, &err);
+            double e = 0, scale = 0;
+            if (check_true("oracle surface", !ex_oracle_surface(&x, NG, u, v, q))) {
+                for (int i = 0; i < NG * NG * 3; i++)
+                    e = fmax(e, fabs(p[i] - q[i])), scale = fmax(scale, fabs(q[i]));
+                check_le("spec with \"group2\": \"closed\" equals the collocation oracle", e, 1e-9 * scale);
+            }
+        }
+        c2b_surface_destroy(sf);
+        c2b_spec_destroy(sp);
+    }
     /* pseudo-navier from a spec */
     {
         c2b_spec *sp = ex_spec("seed001_eq17_navier.json", NULL, NULL);
@@ -154,6 +174,8 @@ int main(void)
         {"{\"solver\": \"thesis-approx\", \"M\": 0, \"boundary\": {}}", "M: expected an integer"},
         {"{\"M\": 5, \"boundary\": {\"u0\": [[\"0\",\"0\",\"0\"]], \"u1\": [[\"1\",\"0\",\"0\"]]}}", "only valid with an approximate"},
         {"{\"solver\": \"pseudo-navier\", \"collocation\": [6], \"boundary\": {}}", "collocation"},
+        {"{\"solver\": \"thesis-approx\", \"group2\": \"exact\", \"boundary\": {}}", "group2: expected \"series\" or \"closed\""},
+        {"{\"solver\": \"pseudo-navier\", \"group2\": \"closed\", \"boundary\": {}}", "group2: only valid with \"solver\": \"thesis-approx\""},
         {"{\"continuity\": \"C2\", \"curves\": {\"c1\": [\"0\",\"0\",\"0\"], \"c4\": [\"1\",\"0\",\"0\"], \"w\": [0,0,0,0]}}", "curves: needs \"continuity\": \"ODE\""},
         {"{\"continuity\": \"ODE\", \"curves\": {\"c1\": [\"0\",\"0\",\"0\"], \"c4\": [\"1\",\"0\",\"0\"]}}", "exactly one of 'w'"},
         {"{\"continuity\": \"ODE\", \"curves\": {\"c1\": [\"0\",\"0\",\"0\"], \"c4\": [\"1\",\"0\",\"0\"], \"controls\": [{\"u\": 0.2, \"curve\": [\"0\",\"0\",\"0\"]}, {\"u\": 0.1, \"curve\": [\"0\",\"0\",\"0\"]}, {\"u\": 0.8, \"curve\": [\"1\",\"0\",\"0\"]}, {\"u\": 0.9, \"curve\": [\"1\",\"0\",\"0\"]}]}}", "controls[1].u"},

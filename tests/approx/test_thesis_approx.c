@@ -60,6 +60,28 @@ static double best_fit_ratio(const c2b_blend *b)
     return errs[0] / errs[1];
 }
 
+/* Largest relative deviation of S, S_u, S_uu of `a` at u = 0 and 1 from the example's
+ * boundary data (evaluated directly from the data functions), over NG v per trimline. */
+static double boundary_error(const c2b_approx *a, const ex_thesis *x)
+{
+    static double d[2 * NG * 6 * 3];
+    double ub[2] = {0, 1}, vb[NG], worst = 0;
+    static const int ent[3] = {0, 1, 3};
+    ex_linspace(NG, 0, 1, vb);
+    if (c2b_approx_eval_grid(a, 2, ub, NG, vb, 2, d, NULL))
+        return INFINITY;
+    for (int s = 0; s < 2; s++)
+        for (int j = 0; j < NG; j++)
+            for (int c = 0; c < 3; c++)
+                for (int p = 0; p < 3; p++) {
+                    const c2b_vdfunc *f = &x->vd.f[c][s][p];
+                    double want = f->fn ? f->fn(f->ctx, 0, vb[j], x->t) : 0;
+                    double got = d[((s * NG + j) * 6 + ent[p]) * 3 + c];
+                    worst = fmax(worst, fabs(got - want) / fmax(1.0, fabs(want)));
+                }
+    return worst;
+}
+
 static double errors_for(const ex_thesis *x, const double *ref, const double *u, const double *v,
                          int M, c2b_approx_approach ap, double *e, c2b_approx **keep)
 {
@@ -142,20 +164,7 @@ int main(void)
         check_true("x data are group 2 (f'' = beta f), solved by eq. 120",
                    c2b_approx_datum(a20, 0, 0, 0, 0, NULL, &rank) == C2B_APPROX_MODE && rank == 20);
         /* boundary constraints exact: S, S_u, S_uu at u = 0, 1 */
-        double ub[2] = {0, 1}, vb[NG], d[2 * NG * 6 * 3], worst = 0;
-        ex_linspace(NG, 0, 1, vb);
-        c2b_approx_eval_grid(a20, 2, ub, NG, vb, 2, d, &err);
-        static const int ent[3] = {0, 1, 3};
-        for (int s = 0; s < 2; s++)
-            for (int j = 0; j < NG; j++)
-                for (int c = 0; c < 3; c++)
-                    for (int p = 0; p < 3; p++) {
-                        const c2b_vdfunc *f = &x.vd.f[c][s][p];
-                        double want = f->fn ? f->fn(f->ctx, 0, vb[j], x.t) : 0;
-                        double got = d[((s * NG + j) * 6 + ent[p]) * 3 + c];
-                        worst = fmax(worst, fabs(got - want) / fmax(1.0, fabs(want)));
-                    }
-        check_le("thesis-approx boundary data S, S_u, S_uu exact (relative)", worst, 1e-12);
+        check_le("thesis-approx boundary data S, S_u, S_uu exact (relative)", boundary_error(a20, &x), 1e-12);
         /* time: set_time to the same t reproduces; another t matches a fresh object */
         c2b_approx_options o = c2b_approx_options_default();
         c2b_approx *fresh = NULL;
@@ -169,8 +178,12 @@ int main(void)
         c2b_approx_destroy(a20);
         /* the variable decomposition (section 3.3) treats these data identically */
         double d10[5] = {NAN, NAN, NAN, NAN, NAN}, d20[5] = {NAN, NAN, NAN, NAN, NAN};
+        c2b_approx *dec20 = NULL;
         errors_for(&x, ref, u, v, 10, C2B_APPROX_DECOMPOSITION, d10, NULL);
-        errors_for(&x, ref, u, v, 20, C2B_APPROX_DECOMPOSITION, d20, NULL);
+        errors_for(&x, ref, u, v, 20, C2B_APPROX_DECOMPOSITION, d20, &dec20);
+        if (check_true("decomposition M = 20", dec20 != NULL))
+            check_le("decomposition: boundary data S, S_u, S_uu exact (relative)", boundary_error(dec20, &x), 1e-12);
+        c2b_approx_destroy(dec20);
         check_close("decomposition M = 10 equals differential", d10[3], e10[3], 1e-10, 0);
         check_close("decomposition M = 20 equals differential", d20[3], e20[3], 1e-8, 1e-18);
         /* decomposition in time: after set_time the (v, t) part carries F(v) (e^t - e^t0);
@@ -196,6 +209,42 @@ int main(void)
             c2b_approx_destroy(moved);
             c2b_approx_destroy(fresh2);
         }
+        /* group 2 in closed form (thesis section 3.4.1): x and y are f'' = beta f data, z
+         * group 1, so the solution is exact for any M. The reference is independent of the
+         * kernel's mode solver: each mode ODE solved by Chebyshev collocation (tests/oracle). */
+        {
+            static double orc[NG * NG * 3], got[NG * NG * 3];
+            c2b_approx_options oc = c2b_approx_options_default();
+            oc.group2_closed = 1;
+            oc.M = 1;
+            c2b_approx *cl = NULL;
+            if (check_true("group 2 closed form: create", !c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, &oc, &cl, &err)) &&
+                check_true("oracle surface", !ex_oracle_surface(&x, NG, u, v, orc))) {
+                double w = 0, scale = 0, coef[1] = {1};
+                int rank = -1;
+                c2b_approx_eval_grid(cl, NG, u, NG, v, 0, got, &err);
+                for (int i = 0; i < NG * NG * 3; i++)
+                    w = fmax(w, fabs(got[i] - orc[i])), scale = fmax(scale, fabs(orc[i]));
+                printf("  group 2 closed form against the collocation oracle: %.3e (scale %.3g)\n", w, scale);
+                check_le("group 2 closed form equals the oracle (M = 1)", w, 1e-11 * scale);
+                check_le("group 2 closed form: boundary data exact", boundary_error(cl, &x), 1e-12);
+                check_true("group 2 closed form: x is group 2, no least squares",
+                           c2b_approx_datum(cl, 0, 0, 0, 0, coef, &rank) == C2B_APPROX_MODE && rank == 0 &&
+                               coef[0] == 0 && c2b_approx_residual_rms(cl) == 0);
+                /* a new time moves the closed form with the data; a fresh solve agrees */
+                c2b_approx *fresh3 = NULL;
+                double q1[3], q2[3], uu = 0.37, vv = 0.61;
+                if (check_true("group 2 closed form: set_time, fresh solve",
+                               !c2b_approx_set_time(cl, x.t + 0.3, &err) &&
+                                   !c2b_approx_create(x.shape, &x.dom, &x.vd, x.t + 0.3, &oc, &fresh3, &err))) {
+                    c2b_approx_eval_grid(cl, 1, &uu, 1, &vv, 0, q1, &err);
+                    c2b_approx_eval_grid(fresh3, 1, &uu, 1, &vv, 0, q2, &err);
+                    check_close("group 2 closed form: set_time equals a fresh solve", q1[0], q2[0], 1e-14, 1e-14);
+                }
+                c2b_approx_destroy(fresh3);
+            }
+            c2b_approx_destroy(cl);
+        }
         c2b_blend_destroy(b);
         c2b_spec_destroy(sp);
     }
@@ -212,6 +261,19 @@ int main(void)
     check_true("collocation [0, 100] rejected naming collocation",
                c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, &o, &a, &err) == C2B_ERR_ARG &&
                    !strncmp(err.msg, "collocation:", 12));
+    /* closed form of a resonant mode (tests/bad/resonant_c2.json): with shape (1, 0, 0, -1)
+     * the mode ODE of beta = -(2 pi)^2 has r^2 = beta among its roots, and its boundary
+     * system is singular. The message names the datum and beta. */
+    o = c2b_approx_options_default();
+    o.group2_closed = 1;
+    for (int c = 0; c < 3; c++)
+        x.shape[c][1] = x.shape[c][2] = 0, x.shape[c][3] = -1;
+    check_true("group 2 closed form of a resonant mode rejected",
+               c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, &o, &a, &err) == C2B_ERR_NUMERIC && !a);
+    printf("  %s\n", err.msg);
+    check_true("... naming the datum and beta", strstr(err.msg, "datum x, side 0, order 0 (closed form, beta = -39.47") &&
+                                                   strstr(err.msg, "resonant"));
+    ex_thesis_init(&x, 0);
     x.shape[1][0] = 0;
     check_true("gamma = 0 rejected", c2b_approx_create(x.shape, &x.dom, &x.vd, x.t, NULL, &a, &err) == C2B_ERR_SPEC);
     return test_summary("test_thesis_approx");
