@@ -2,6 +2,7 @@
 bad parameters. After each, the document's object list and every shape (BREP text hash
 and volume) must be unchanged, and the error must name the object and sub-element."""
 import math
+import re
 
 import FreeCAD
 import Part
@@ -278,6 +279,55 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()
     assert doc.getObject(name).Verdict == "G2"
+
+
+def _lose_far_face(monkeypatch, shape, edge):
+    """Fault injection into the fillet's sewing: the sewn faces lose the face of `shape`
+    farthest from `edge`, so the shell has free edges that touch no blend."""
+    sewn = fl._sewn
+    far = max(shape.Faces, key=lambda f: f.distToShape(edge)[0]).CenterOfMass
+
+    def lose(faces):
+        lost = min(faces, key=lambda f: f.distToShape(Part.Vertex(far))[0])
+        return sewn([f for f in faces if f is not lost])
+
+    monkeypatch.setattr(fl, "_sewn", lose)
+
+
+def test_failed_sewing_leaves_document_unchanged(doc, monkeypatch):
+    """A sewing that fails (injected) while a C2 Fillet is made: the error names the
+    object and edge, and the document is left exactly as it was."""
+    box = doc.getObject("Box")
+    before, undo = shapes.document_state(doc), doc.UndoCount
+    _lose_far_face(monkeypatch, box.Shape, box.Shape.Edge1)
+    with pytest.raises(C2BlendError, match=r"^Box\.Edge1: sewing the blend faces .* failed"):
+        make.make_fillet(box, ["Edge1"], 2.0)
+    assert shapes.document_state(doc) == before
+    assert doc.UndoCount == undo
+
+
+def test_failed_sewing_on_recompute_keeps_the_previous_shape(doc, monkeypatch):
+    """A C2 Fillet whose recompute fails in the sewing (injected) after its radius is
+    changed keeps its previous shape and says why; once the fault is gone, the new radius
+    is applied."""
+    box = doc.getObject("Box")
+    f = make.make_fillet(box, ["Edge1"], 2.0)
+    def shape_of_f():  # (BREP hash, volume) of the fillet object
+        return [x[3:] for x in shapes.document_state(doc) if x[0] == f.Name]
+
+    good = shape_of_f()
+    _lose_far_face(monkeypatch, box.Shape, box.Shape.Edge1)
+    f.Radius = 3.0
+    doc.recompute()
+    assert "Invalid" in f.State
+    assert re.match(r"Box\.Edge1: sewing the blend faces .* failed", f.Proxy.last_error)
+    assert shape_of_f() == good
+    monkeypatch.undo()
+    f.touch()
+    doc.recompute()
+    assert "Invalid" not in f.State and f.Verdict == "G2" and f.Shape.isValid()
+    # a larger radius takes more material away
+    assert f.Shape.Volume < good[0][1]
 
 
 def test_plugin_writers_are_atomic(tmp_path):

@@ -753,6 +753,72 @@ def test_animation_10_frames(tmp_path):
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_animated_fillet_of_a_shaft_whose_radius_depends_on_time(tmp_path):
+    """A C2 Fillet animated over 10 frames: the shaft of a shaft on a plate has radius
+    5 + Time (Time 0 to 1), the junction is filleted at R = 2, and every frame is a valid
+    G2 solid written as STEP. At every frame, OCCT's own fillet of the same edge is G1
+    with the curvature jump 1/R = 0.5 at the plate."""
+    doc = FreeCAD.newDocument("AnimFillet")
+    clock = make.make_clock(doc)
+    plate = doc.addObject("Part::Box", "Plate")
+    plate.Length = plate.Width = 40
+    plate.Height = 5
+    shaft = doc.addObject("Part::Cylinder", "Shaft")
+    shaft.Height = 20
+    shaft.Placement.Base = V(20, 20, 0)
+    shaft.setExpression("Radius", "5 + Clock.Time")
+    fused = doc.addObject("Part::MultiFuse", "ShaftPlate")
+    fused.Shapes = [plate, shaft]
+    fused.Refine = True
+    doc.recompute()
+    junction = "Edge%d" % (shapes.circle_edge(fused.Shape, 5.0) + 1)
+    fillet = make.make_fillet(fused, [junction], 2.0)
+    times = [k / 9 for k in range(10)]
+    frames = animate.animate(doc, clock, times, [fillet], str(tmp_path))
+    assert len(frames) == 10
+    vols = []
+    for fr in frames:
+        assert fr["verdicts"] == {fillet.Label: "G2"}
+        assert fr["worst_g1"] < 1e-8 and fr["worst_g2_rel"] < 1e-6
+        solid = Part.read(fr["files"][0])
+        assert solid.isValid() and len(solid.Solids) == 1
+        vols.append(solid.Volume)
+    # the shaft's volume above the plate grows by pi ((5 + t)^2 - 25) 15 (the fillet's
+    # ring also moves outwards, which adds a little more)
+    assert vols[-1] - vols[0] > math.pi * (36 - 25) * 15
+    for t in times[::3]:  # OCCT's fillet of the same edge, frame by frame
+        clock.Time = t
+        doc.recompute()
+        assert shapes.circle_edge(fused.Shape, 5.0) + 1 == int(junction[4:])
+        occt, _ = occt_jump(fused.Shape, [junction], 2.0)
+        assert max(r["g2"] for r in occt["edges"]) == pytest.approx(0.5, abs=1e-6)
+    FreeCAD.closeDocument(doc.Name)
+
+
+def test_the_example_macro_runs(tmp_path):
+    """examples/macro_c2_fillet.py, as the README's demo runs it (plain python3, out dir
+    given): it writes a valid filleted solid as STEP and a G2 report, and prints the
+    comparison with OCCT's fillet."""
+    import subprocess
+    import sys
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    env = dict(os.environ, HOME=str(tmp_path), PYTHONPATH=os.pathsep.join(
+        [os.path.join(root, "plugin", "C2Blend"), os.environ.get("C2B_MODULE_DIR", "")]))
+    out = tmp_path / "out"
+    run = subprocess.run([sys.executable, os.path.join(root, "examples", "macro_c2_fillet.py"),
+                          str(out)], env=env, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    assert "C2 fillet of ShaftPlate, R = 2: valid solid True" in run.stdout
+    assert "OCCT's rolling-ball fillet of the same edge: G1" in run.stdout
+    solid = Part.read(str(out / "demo.step"))
+    assert solid.isValid() and len(solid.Solids) == 1
+    with open(out / "demo_report.json") as f:
+        report = json.load(f)
+    assert report["verdict"] == "G2"
+    assert solid.Volume == pytest.approx(report["volume"], rel=1e-9)
+    assert sorted(p.name for p in out.iterdir()) == ["demo.step", "demo_report.json"]
+
+
 # bad input: clear messages, documents untouched ------------------------------------------
 @pytest.fixture
 def boxdoc():
