@@ -84,6 +84,13 @@ try:
     result["map_nodes"] = int(curvature_map_shown(fillet))
     from c2bwb.geometry import cgalcheck
     result["cgal_tool"] = cgalcheck.find_tool()
+    # Check continuity on an edge selection: one trimline of the fillet (a C2Check)
+    trim = json.loads(fillet.Report)["trimlines"][0]["edge"]
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(fillet, trim)
+    FreeCADGui.runCommand("C2Blend_Check")
+    check = doc.getObject("C2Check")
+    result["edge_check"] = [trim, check.Verdict if check else None]
     # C2 Blend faces through the command (face + edge picked on each cylinder), driven
     # by a Clock; then Animate writes 10 PNG frames (the folder dialog is answered here)
     from c2bwb.objects import make

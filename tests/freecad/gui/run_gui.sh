@@ -28,6 +28,7 @@ r = json.load(open(sys.argv[1]))
 assert r["ok"], r.get("error")
 assert r["verdict"] == "G2" and r["valid"], r
 assert r["map_nodes"] == 1, r
+assert r["edge_check"][1] == "G2", r
 assert r["non_white_fraction"] > 0.05 and r["colours"] > 50, r
 assert r["blend_verdict"] == "G2", r
 assert r["blend_preview"].startswith("G2; ") and r["blend_preview"].endswith("the blend face only"), r
@@ -63,4 +64,5 @@ print("gui test: G2 fillet, curvature map shown, screenshot not blank; G2 blend 
 PY
 if [ -n "$C2B_CGAL_TOOL" ]; then
   grep "CGAL jet fit vs analytic, blend faces" "$OUT/gui_log.txt"
+  grep -E "CGAL jet fit vs analytic, Face[0-9]+, Face[0-9]+ " "$OUT/gui_log.txt"
 fi

@@ -116,7 +116,8 @@ class Check(_Command):
                 if bad:
                     raise C2BlendError("%s is not an edge" % bad[0],
                                        "%s.%s" % (s.Object.Label, bad[0]))
-                make.make_check(s.Object, list(s.SubElementNames))
+                check = make.make_check(s.Object, list(s.SubElementNames))
+                _cgal_cross_check(check)
             elif hasattr(s.Object, "Report") and s.Object.Report:
                 FreeCAD.Console.PrintMessage("%s: %s\n" % (s.Object.Label, s.Object.Verdict))
                 _cgal_cross_check(s.Object)
@@ -129,17 +130,24 @@ class Check(_Command):
 
 
 def _cgal_cross_check(obj):
-    """CGAL jet-fitting estimate against the analytic curvature of obj's blend faces,
-    printed to the Report view (skipped, with a note, when the tool is not installed)."""
+    """CGAL jet-fitting estimate against the analytic curvature, printed to the Report
+    view (skipped, with a note, when the tool is not installed): of the blend faces of a
+    C2Fillet or C2Blend result (the faces across their trimlines compared as a second
+    region), or of the faces on both sides of a C2Check's edges."""
     import json
     from ..geometry import cgalcheck
     rep = json.loads(obj.Report)
-    names = sorted({r["blend_face"] for r in rep.get("trimlines", []) if "blend_face" in r})
+    if "trimlines" in rep:
+        shape = obj.Shape
+        names = sorted({r["blend_face"] for r in rep["trimlines"] if "blend_face" in r})
+        others = sorted({r["faces"][1] for r in rep["trimlines"]}) if names else []
+    else:
+        shape = obj.Target[0].Shape
+        names, others = sorted({f for r in rep["edges"] for f in r["faces"]}), []
     if not names:
         return
-    others = sorted({r["faces"][1] for r in rep["trimlines"]})
-    summary = cgalcheck.cross_check(obj.Shape, [obj.Shape.getElement(n) for n in names],
-                                    [obj.Shape.getElement(n) for n in others])
+    summary = cgalcheck.cross_check(shape, [shape.getElement(n) for n in names],
+                                    [shape.getElement(n) for n in others])
     if summary is None:
         FreeCAD.Console.PrintMessage("  CGAL cross-check skipped: %s not found\n" % cgalcheck.TOOL)
     elif "error" in summary:
@@ -148,10 +156,11 @@ def _cgal_cross_check(obj):
         for name, reg in summary["regions"].items():
             sm = reg["smooth"]
             if sm["count"]:
+                what = ("%s faces" % name) if "trimlines" in rep else ", ".join(names)
                 FreeCAD.Console.PrintMessage(
-                    "  CGAL jet fit vs analytic, %s faces (%d vertices): mean |dk1| %.3g, "
+                    "  CGAL jet fit vs analytic, %s (%d vertices): mean |dk1| %.3g, "
                     "mean |dk2| %.3g, max %.3g\n"
-                    % (name, sm["count"], sm["k1"]["mean_abs"], sm["k2"]["mean_abs"],
+                    % (what, sm["count"], sm["k1"]["mean_abs"], sm["k2"]["mean_abs"],
                        max(sm["k1"]["max_abs"], sm["k2"]["max_abs"])))
 
 
