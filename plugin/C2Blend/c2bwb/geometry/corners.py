@@ -142,8 +142,11 @@ def _seam_angle(face, shell, edges):
     pairs = []
     for e in edges:
         f = shell.ancestorsOfType(e, Part.Face)[0]
+        ga = gb = None  # each projection starts from the previous point's, along the edge
         for t in ck.sample_params(e, SEAM_POINTS):
             p = e.valueAt(t)
-            pairs.append((frame_at_point(face, p).n, frame_at_point(f, p).n))
+            a, b = frame_at_point(face, p, ga), frame_at_point(f, p, gb)
+            ga, gb = (a.u, a.v), (b.u, b.v)
+            pairs.append((a.n, b.n))
     side = 1.0 if sum(a.dot(b) for a, b in pairs) >= 0.0 else -1.0
     return max(angle(a * side, b) for a, b in pairs)
