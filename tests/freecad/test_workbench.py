@@ -965,7 +965,7 @@ def test_a_blend_that_cannot_be_sewn_is_kept_as_occts(monkeypatch):
     bracket's inner edge did this for real while end faces grew by a Boolean fuse,
     which split the end section where it runs within 1e-7 of the faces (G2 contact)."""
     box = shapes.box()
-    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, corners, tol: [])
+    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, legs, tol: [])
     solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
     assert_valid(solid)
     assert not rep["blends"] and rep["verdict"] == "G1"
@@ -1221,6 +1221,51 @@ def test_a_corner_of_convex_and_concave_fillets():
     assert_corner_filled(rep, 3, 1, sides=4)
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
     occt_jump(s, corner, 1.0)
+
+
+def test_a_corner_of_two_concave_fillets_and_a_convex_one():
+    """The gusset's foot (25, 13, 5), where its sloped edge (convex) meets the floor's
+    two concave edges, R = 1. OCCT's corner patch there has four sides. Its edge on the
+    floor cuts across the corner of the gusset's footprint (0.02 deep: the convex fillet
+    uncovers the floor there), and the floor could not grow by that sliver ("leaves face
+    Face7 ... away from the face's corners"); the convex fillet ends along a slanted
+    edge, from where the foot fillet's contact z = 6 on the gusset's side meets its own
+    (x + z = 30 - sqrt 2) to where the sloped fillet's contact meets its own on the
+    slope, and its blend, ended at the ball's section through the latter, ran below the
+    floor to z = 4.59 and could not be sewn. All three fillets were kept as OCCT's. Now
+    the blend is cut along OCCT's slanted edge and the floor grows by the sliver, as
+    OCCT's floor does: the filling has the patch's four corners, the contact points."""
+    s = shapes.gusset_bracket()[0]
+    corner = _corner_edges(s, V(25, 13, 5))
+    assert len(corner) == 3
+    solid, rep = C2Blend.fillet_report(s, corner, 1.0, label="Gusset")
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert len(rep["blends"]) == 3 and not rep["kept_occt_faces"]
+    assert len(rep["trimlines"]) == 6
+    assert all(r["verdict"] == "G2" for r in rep["trimlines"])
+    (c,) = rep["corner_patches"]
+    assert c["edges"] == 4 and c["g0"] < 1e-5 and c["g1"] < 1e-3, c  # 3.4e-6, 1.7e-4
+    # the balls' contacts: on the floor at y = 12 and x = 25 + tan(pi / 8) (the sloped
+    # fillet's planes meet at 135 degrees), on the gusset's side at z = 6, on the slope
+    # at y = 14, tan(pi / 8) from its foot
+    r2, t = math.sqrt(2.0), math.tan(math.pi / 8.0)
+    contacts = [V(24 - r2, 12, 5), V(24 - r2, 13, 6), V(25 - t / r2, 14, 5 + t / r2),
+                V(25 + t, 14, 5)]
+    plate = solid.getElement(c["face"])
+    assert len(plate.Vertexes) == 4
+    assert all(min((v.Point - p).Length for v in plate.Vertexes) < 1e-9
+               for p in contacts)
+    # no blend nor the filling reaches below the floor, into the bracket's plate
+    assert min(v.Point.z for f in blend_faces(solid) for v in f.Vertexes) > 5 - 1e-9
+    # the floor is OCCT's, with the footprint's corner uncovered
+    floors = [[f for f in x.Faces if isinstance(f.Surface, Part.Plane)
+               and f.BoundBox.ZLength < 1e-9 and abs(f.BoundBox.ZMin - 5) < 1e-9]
+              for x in (solid, s.makeFillet(1.0, [s.getElement(e) for e in corner]), s)]
+    assert [len(f) for f in floors] == [1, 1, 1]
+    assert abs(floors[0][0].Area - floors[1][0].Area) < 1e-9 * floors[1][0].Area
+    inside = Part.Vertex(V(24.99, 13.01, 5))  # in the footprint, 0.01 from its corner
+    assert [f[0].distToShape(inside)[0] < 1e-9 for f in floors] == [True, True, False]
 
 
 def test_a_convex_and_a_concave_fillet_at_a_vertex_are_kept_with_the_reason():
@@ -2390,7 +2435,7 @@ def test_end_faces_belong_to_the_runs_outer_ends():
     assert runs is not None and len(runs) > 3
     with_faces = []
     for k, run in enumerate(runs):
-        for end in ends.chain_ends(run, faces):
+        for end in ends.chain_ends(run, faces, 1.5):
             if end.faces:
                 assert not end.junction, (k, end.at)
                 with_faces.append((k, end.at))

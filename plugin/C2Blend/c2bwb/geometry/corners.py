@@ -5,9 +5,10 @@ OCCT closes such a vertex with a corner patch (a sphere where three equal fillet
 on a box) that joins each rolling-ball face along that face's circular end section. A
 PDE blend's end section is not that circle, so where a fillet at a corner is replaced
 by a blend (rollingball.CornerPatch), the patch is replaced as well: the blends stop at
-the sections of the ball that touches the corner's three faces (ends.py), and the hole
-they leave in the sewn shell, bounded by their end sections, the end sections of the
-fillets kept as OCCT made them there, and faces, is filled by OCCT's plate filling
+the sections of the ball that touches the corner's three faces, or are cut along
+OCCT's end edge where it is no section (ends.py), and the hole they leave in the sewn
+shell, bounded by their ends, the end sections of the fillets kept as OCCT made them
+there, and faces, is filled by OCCT's plate filling
 (BRepFill_Filling through FreeCAD's Surface::Filling), tangent (G1 order) to the blend,
 fillet or face along each edge of the hole. The plate is an approximation: its seams
 are off by about 1e-6 and turn from the neighbouring faces' tangent planes by 1e-5 to

@@ -17,7 +17,11 @@ Each end of an open fillet chain is one of:
   fillets meet, one ball touches the three faces, and each fillet ends at its section:
   the blend stops at that ball's exact section (knots.at_corner_balls; OCCT's end
   section is that ball's only on analytic faces), and corners.py fills the hole the
-  blends leave around the patch.
+  blends leave around the patch. Where OCCT's end edge at the patch is no ball's
+  section (at the foot of a gusset's sloped edge, where a convex fillet meets two
+  concave ones, the convex one ends along a slanted curve from one concave fillet's
+  trimline to the other's), that end is trimmed, along a cut through OCCT's end edge
+  (_slant_tool).
 """
 import math
 
@@ -34,6 +38,12 @@ CUT_NODES = 128  # intervals in u of a cut curve's interpolation
 CUT_TOL = 1e-8  # a cut curve lies on both surfaces within this, relative to the blend
 MAX_NEWTON = 30
 NEWTON_DONE = 1e-14  # relative residual or step at which a cut point is converged
+# OCCT's end edge at a corner patch is a ball's section unless it leaves the plane
+# across the guide at the end by more than SLANT times its length (the gusset's sloped
+# edges at R = 1: 0.75; sections: 1e-7)
+SLANT = 1e-3
+RULING = 0.5  # radii along the fillet's normals, each way, of the tool cutting a slant
+SLANT_NODES = 16  # intervals along OCCT's slanted end edge of that tool's rulings
 
 
 class ChainEnd:
@@ -42,14 +52,17 @@ class ChainEnd:
     rolling-ball faces (mitres); edges: [(OCCT's end edge, the face it meets there)];
     across: True when the end is exact (see the module); junction: True where a run of
     a chain meets the next run (rollingball.Run): exact, with no face there; corner:
-    True where it meets a corner patch: exact, the patch replaced by a filling; ball:
+    True where it meets a corner patch: exact unless slanted, the patch replaced by a
+    filling; ball:
     at a corner, the third face (of OCCT's result) that the ball ending the fillet
-    touches besides the chain's two sides, or None where there is not exactly one."""
+    touches besides the chain's two sides, or None where there is not exactly one or the
+    end is slanted; slant: at a corner, OCCT's end edge there where it is no ball's
+    section (the end is then trimmed along it: tool, _slant_tool), else None."""
 
     def __init__(self, at, junction=False):
         self.at, self.faces, self.fillets, self.edges = at, [], [], []
         self.across = self.junction = junction
-        self.corner, self.ball = False, None
+        self.corner, self.ball, self.slant, self.tool = False, None, None, None
 
     def edges_on(self, face):
         """OCCT's end edges where the fillet meets `face`."""
@@ -63,8 +76,9 @@ def _guide(chain, at):
     return sec.rbf.point(a, sec.cm), sec.rbf.derivative(a, sec.cm, True)
 
 
-def chain_ends(chain, fillet_faces):
-    """[ChainEnd at the start, ChainEnd at the end] of an open chain, [] if closed."""
+def chain_ends(chain, fillet_faces, radius):
+    """[ChainEnd at the start, ChainEnd at the end] of an open chain of rolling-ball
+    faces of `radius`, [] if closed."""
     if chain.closed:
         return []
     out = [ChainEnd(0, chain.junctions[0]), ChainEnd(1, chain.junctions[1])]
@@ -86,12 +100,21 @@ def chain_ends(chain, fillet_faces):
     for edge, patch in chain.corners:
         end = nearest(edge)
         end.corner = True
+        m, t = guide[end.at]
+        off = max(abs((p - m).dot(t)) for p in edge.discretize(9)) / t.Length
+        if off > SLANT * edge.Length:
+            end.slant = edge
+            end.tool = _slant_tool(edge, next(f for f in chain.faces if any(
+                edge.isSame(e) for e in f.Edges)), radius)
+            continue
         sides = chain.sections[-end.at].sides
         third = [f for f in patch.touches if not any(f.isSame(s) for s in sides)]
         end.ball = third[0] if len(third) == 1 else None
     for end in out:
         m, t = guide[end.at]
-        if end.corner and not end.faces:
+        if end.slant is not None:
+            end.across = False
+        elif end.corner and not end.faces:
             end.across = True
         elif not end.junction and len(end.faces) == 1 and not end.fillets \
                 and end.faces[0].Surface.isPlanar():
@@ -128,6 +151,26 @@ def _tool(face):
             lo, hi = max(lo, bounds[2 * k]), min(hi, bounds[2 * k + 1])
         box += [lo, hi]
     return s.toShape(*box)
+
+
+def _slant_tool(edge, face, radius):
+    """A face through OCCT's end `edge` of its rolling-ball `face` of `radius`, ruled
+    along the face's normals (RULING radii each way, at SLANT_NODES + 1 points of the
+    edge): it crosses a blend close to the rolling ball there, and meets the blend's
+    trimlines at the edge's ends, where the rulings lie along the side faces' normals
+    (the rolling ball is tangent to them there) and the trimlines in those faces."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    ts = [k / SLANT_NODES for k in range(SLANT_NODES + 1)]
+    sides = []
+    for sign in (-1.0, 1.0):
+        pts = []
+        for t in ts:
+            p = edge.valueAt(a + (b - a) * t)
+            pts.append(p + frame_at_point(face, p).n * (sign * RULING * radius))
+        c = Part.BSplineCurve()
+        c.interpolate(Points=pts, Parameters=ts)
+        sides.append(c.toShape())
+    return Part.makeRuledSurface(*sides)
 
 
 def _newton(f, x, scale, what):
@@ -244,10 +287,10 @@ def trim(blends, original_face):
     """Cut every blend with a trimmed end back: each extended face (b.full_face) is cut
     along its section with the tools of its trimmed ends (the end faces' surfaces, via
     original_face(result face) -> face of the original solid; a mitre partner's
-    extended face, whose section is computed once and shared). Sets b.face to the piece
-    holding b.probe. Returns [(blend, reason)] for blends that cannot be cut, or whose
-    extension survives; blends whose mitre partner is not among `blends` are returned
-    too."""
+    extended face, whose section is computed once and shared; the tool through OCCT's
+    slanted end edge at a corner patch). Sets b.face to the piece holding b.probe.
+    Returns [(blend, reason)] for blends that cannot be cut, or whose extension
+    survives; blends whose mitre partner is not among `blends` are returned too."""
     todo = [b for b in blends if any(not e.across for e in b.ends)]
     failed = [(b, "it meets another fillet at an angle, and that fillet is kept as OCCT "
                "made it") for b in todo
@@ -260,13 +303,16 @@ def trim(blends, original_face):
         for e in b.ends:
             if e.across:
                 continue
-            for f in e.faces:
-                k = _blend_of(f, todo)
+            for f in e.faces + [None] * (e.slant is not None):  # None: the slant
+                k = None if f is None else _blend_of(f, todo)
                 if k is not None and k < i:
                     continue  # a mitre's edge is made once, by the first of its blends
                 partner = None if k is None else todo[k]
                 try:
-                    if partner is None:
+                    if f is None:
+                        edge, off = cut_edge(b.surface, b.surface_diag, e.tool,
+                                             [e.slant])
+                    elif partner is None:
                         edge, off = cut_edge(b.surface, b.surface_diag,
                                              _tool(original_face(f)), e.edges_on(f))
                     else:
@@ -276,7 +322,9 @@ def trim(blends, original_face):
                 except ValueError as ex:
                     failed.append((b, "its blend, traced %g radii past OCCT's end, cannot "
                                    "be cut back to the %s there: %s"
-                                   % (EXTEND, "fillet" if partner else "end face", ex)))
+                                   % (EXTEND, "fillet" if partner else "end face" if f
+                                      else "slanted end of OCCT's fillet at its corner "
+                                      "patch", ex)))
                     continue
                 edge.fixTolerance(max(2.0 * off, 1e-7 * b.surface_diag))
                 cuts[id(b)].append(edge)

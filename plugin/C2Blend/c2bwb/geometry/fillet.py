@@ -9,23 +9,25 @@ ball on those faces is traced (contact.py), sampled uniformly in the arc length 
 ball's centre curve, and turned into G2 cross-boundary data; the PDE blend of those
 data is fitted as a B-spline face. An open chain that does not end on a plane across it
 (a slanted or curved end face, or another fillet met at an angle: a mitre) is traced
-past its ends and cut back by what lies there (ends.py). The faces of the original
-solid that the blend touches (its two sides and its end faces) are cut anew along the
-blend's boundary edges (an end face grows by the region between the corner and the
-blend's end section where the fillet uncovers its surface), and everything is sewn into
-a solid and checked (BRepCheck, and continuity along every trimline). A chain whose side
-changes face (a rounded outline) has data only C1 along it: each run along one pair of
-faces gets the pointwise blend, and the runs meet at junctions (solve_runs). So do the
-pieces of a chain whose data are too rough because the contact crosses knot lines of
+past its ends and cut back by what lies there (ends.py); so is one that OCCT ends at a
+corner patch along a slanted edge, no ball's section: along that edge. The faces of the
+original solid that the blend touches (its two sides and its end faces) are cut anew
+along the blend's boundary edges (an end face grows by the region between the corner and
+the blend's end section where the fillet uncovers its surface, and a face by the region
+between its corner and a corner patch's edge cutting across it), and everything is sewn
+into a solid and checked (BRepCheck, and continuity along every trimline). A chain whose
+side changes face (a rounded outline) has data only C1 along it: each run along one pair
+of faces gets the pointwise blend, and the runs meet at junctions (solve_runs). So do
+the pieces of a chain whose data are too rough because the contact crosses knot lines of
 a side face (solve_chain, knots.py). Where three or more fillets meet at a vertex,
 OCCT's corner patch ends their chains; when any of them is blended, the patch is
-replaced by a plate filling tangent to the blends' end sections and to the end
-sections of the fillets kept there (corners.py), measured and reported, never claimed
-G2. Kept as OCCT made them, and reported as such with the reason (no G2 claim is made
-there): chains whose side changes face where no blend is G2 to both faces, and chains
-whose exact contact, blend, fit, cut or end face's growth cannot be built or whose
-blend overshoots its faces (NotReplaced, ends.trim, Unassembled), with the fillets
-that meet them in a mitre, and the corner patches where every fillet is kept.
+replaced by a plate filling tangent to the blends' end sections and to the end sections
+of the fillets kept there (corners.py), measured and reported, never claimed G2. Kept as
+OCCT made them, and reported as such with the reason (no G2 claim is made there): chains
+whose side changes face where no blend is G2 to both faces, and chains whose exact
+contact, blend, fit, cut or end face's growth cannot be built or whose blend overshoots
+its faces (NotReplaced, ends.trim, Unassembled), with the fillets that meet them in a
+mitre, and the corner patches where every fillet is kept.
 """
 import math
 import numbers
@@ -204,7 +206,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     trimmed (ends.py), its data sampled to `target` (relative). Raises NotReplaced
     saying why it cannot."""
     nrows = ROWS[continuity]
-    at_ends = ends.chain_ends(chain, fillet_faces)
+    at_ends = ends.chain_ends(chain, fillet_faces, radius)
     try:
         chain = at_corner_balls(chain, at_ends, radius)
         contact = Contact(chain, radius, ends.extension(at_ends, radius))
@@ -464,6 +466,26 @@ def _growth(face, edge, tol):
     return region, corner.Point, legs
 
 
+def _parts(face, edge, tol):
+    """How face grows along an edge on its surface that does not lie on it: ([parts of
+    edge on face], [(part off face, its _growth)]), or None when a part off the face
+    spans no corner. The edge is one part off the face (a fillet's end section beyond
+    it), or it crosses the face's boundary and is split there: an edge of OCCT's corner
+    patch where two concave fillets meet a convex one cuts across the corner of the
+    face between the concave ones, whose surface the convex fillet uncovers (a
+    gusset's sloped edge meeting the floor, R = 1: the patch's edge on the floor cuts
+    the corner of the gusset's footprint 0.02 deep)."""
+    g = _growth(face, edge, tol)
+    if g is not None:
+        return [], [(edge, g)]
+    parts = face.copy().generalFuse([edge], tol)[1][1]  # a copy: see _cut_face
+    on = [p for p in parts if _edge_on_face(p, face, tol)]
+    off = [(p, _growth(face, p, tol)) for p in parts if not any(p is q for q in on)]
+    if not on or any(g is None for _, g in off):
+        return None
+    return on, off
+
+
 def _end_at(edge, corner, p, tol):
     """The edge along edge's curve from its end away from point `corner` to point p,
     which lies on that curve (within tol) before or beyond the corner, or None when
@@ -482,10 +504,15 @@ def _end_at(edge, corner, p, tol):
     return Part.Edge(c, min(s, far), max(s, far))
 
 
-def _grown(face, section, corner, region, tol):
+def _grown(face, section, whole, corner, region, tol):
     """face (a piece of an original face that keeps the vertex `corner`) grown by
     `region` (_growth): its two edges at the corner end instead at the ends of
-    `section` (shortened or extended along their curves), and section joins them; its
+    `section` (shortened or extended along their curves, or left out where one ends
+    there already: the part of an edge crossing the face's corner, _parts, has the
+    face's edges at the corner as legs), and `whole` joins them: the section, or the
+    edge it is a part of, which then replaces the face's edges along its other parts
+    (OCCT's corner patch's edge: the plate filling its hole turned from the faces
+    around it by up to 5.6e-3 rad where the edge was split in three, 2.4e-4 whole). Its
     other wires are kept. Rebuilding the wire keeps the section's edge whole, where a
     Boolean fuse of face and region may split it near its ends (a G2 section leaves a
     plane as d^3, so it runs within 1e-7 of a leg there). Raises ValueError when a
@@ -501,14 +528,22 @@ def _grown(face, section, corner, region, tol):
               if any((v.Point - corner).Length <= tol for v in e.Vertexes)]
         if not at:
             continue
-        moved = [next((g for g in (_end_at(e, corner, p, tol) for e in at) if g), None)
-                 for p in ends]
-        if len(at) != 2 or None in moved:
-            raise ValueError("the end section's ends are not on the curves of the "
-                             "face's two edges at its corner (%.6g, %.6g, %.6g)"
-                             % tuple(corner))
+        moved = []
+        for p in ends:
+            if len(at) == 2 and any((v.Point - p).Length <= tol
+                                    for e in at for v in e.Vertexes):
+                continue  # an edge at the corner ends there: the region's leg
+            g = next((g for g in (_end_at(e, corner, p, tol) for e in at) if g), None)
+            if len(at) != 2 or g is None:
+                raise ValueError("the end section's ends are not on the curves of the "
+                                 "face's two edges at its corner (%.6g, %.6g, %.6g)"
+                                 % tuple(corner))
+            moved.append(g)
         rest = [e for e in w.Edges if not any(e.isSame(x) for x in at)]
-        swap.append((w, Part.Wire(Part.__sortEdges__(rest + moved + [section]))))
+        if whole is not section:
+            rest = [e for e in rest if not all(
+                whole.distToShape(Part.Vertex(q))[0] <= tol for q in _edge_points(e))]
+        swap.append((w, Part.Wire(Part.__sortEdges__(rest + moved + [whole]))))
     # the face itself with the wire replaced: the kept edges keep their curves on its
     # surface, which a new face on a copy of the surface would lack. The fix adds the
     # new edges' curves on the surface.
@@ -541,18 +576,22 @@ def _edge_on_face(edge, face, tol):
     return all(_on_face(face, p, tol) for p in _edge_points(edge))
 
 
-def _consumed(edge, boundary, tol):
-    """True when no part of edge lies on `boundary` (the faces of OCCT's fillet result),
+def _consumed(edge, kept, tol):
+    """True when no part of edge lies on `kept` (the edges of OCCT's fillet result),
     tested at its middle and at 1e-3 of its length from each end: an edge the fillet
-    only shortens keeps one end's neighbourhood, or its middle if shortened at both."""
-    return all(boundary.distToShape(Part.Vertex(p))[0] > tol
+    only shortens keeps one end's neighbourhood, or its middle if shortened at both, as
+    an edge of the result. A face of the result may hold a consumed edge's end inside
+    it, where a fillet uncovers the face's corner (_parts)."""
+    return all(kept.distToShape(Part.Vertex(p))[0] > tol
                for p in _edge_points(edge, (0.5, 1e-3, 1.0 - 1e-3)))
 
 
-def _cut_face(face, tools, sharp, corners, tol):
+def _cut_face(face, tools, sharp, legs, tol):
     """The pieces of an original face, cut along the edges `tools` lying on it, that do
-    not touch any of the `sharp` edges the fillets consumed, except at `corners` (points
-    where fillets end and the face grows from: _growth)."""
+    not touch any of the `sharp` edges the fillets consumed, except along `legs` (those
+    of the regions this face or a neighbour grows by, _growth, from the corners where
+    fillets end: the piece keeping such a corner keeps the part of a sharp edge along a
+    leg until it grows, _grown)."""
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
     pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
@@ -565,7 +604,7 @@ def _cut_face(face, tools, sharp, corners, tol):
         if piece.distToShape(edge)[0] > tol:
             return False
         return any(piece.distToShape(Part.Vertex(p))[0] <= tol
-                   and all((p - c).Length > tol for c in corners)
+                   and all(g.distToShape(Part.Vertex(p))[0] > tol for g in legs)
                    for p in _edge_points(edge, (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)))
 
     return [f for f in pieces if not any(touches(f, e) for e in sharp)]
@@ -616,13 +655,14 @@ def _update_tolerances(edges):
 class _Touched:
     """A face of the original solid that blends touch: orig; tools: the edges lying on
     its surface that bound it anew (blend edges, kept OCCT fillets' edges, legs of
-    neighbours' growth regions); inside: those lying on the face itself; grown: an
-    (end section, corner, region) for each region it grows by (_growth, _grown);
-    corners: vertices the fillets end at, which it keeps; owners: the blends
-    concerned."""
+    neighbours' growth regions); inside: those lying on the face itself, or their parts
+    that do (_parts); grown: an (end section, the edge it is or is a part of, corner,
+    region) for each region it grows by (_growth, _grown); legs: those of its and its
+    neighbours' growth regions, along which it keeps its corners (_cut_face); owners:
+    the blends concerned."""
 
     def __init__(self, orig):
-        self.orig, self.tools, self.inside, self.grown, self.corners = orig, [], [], [], []
+        self.orig, self.tools, self.inside, self.grown, self.legs = orig, [], [], [], []
         self.owners = []
 
     @staticmethod
@@ -674,40 +714,42 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         for e in t.tools:
             if any(e is x for x in t.inside):
                 continue
-            g = _growth(t.orig, e, tol)
-            if g is None:
+            parts = _parts(t.orig, e, tol)
+            if parts is None:
                 raise Unassembled(t.owners, "an end of its blend leaves face %s of the "
                                   "original solid away from the face's corners"
                                   % ck.element_name(shape, t.orig, "Face"))
-            t.grown.append((e, g[1], g[0]))
-            t.corners.append(g[1])
-            for leg in g[2]:  # a leg beyond the face's edges cuts the face it crosses
-                if any(_edge_on_face(leg, x, tol) for x in t.orig.Edges):
-                    continue
-                other = next((f for f in shape.Faces if not f.isSame(t.orig)
-                              and _edge_on_face(leg, f, tol)), None)
-                if other is None:
-                    raise Unassembled(t.owners, "the region by which its blend's end "
-                                      "extends face %s is not bounded by the solid's faces"
-                                      % ck.element_name(shape, t.orig, "Face"))
-                o = _Touched.of(touched, other, t.owners[0])
-                o.tools.append(leg)
-                o.inside.append(leg)
-                o.corners.append(g[1])
-    boundary = Part.Compound(result.Faces)
+            t.inside += parts[0]
+            for section, (region, corner, legs) in parts[1]:
+                t.grown.append((section, e, corner, region))
+                t.legs += legs
+                for leg in legs:  # a leg beyond the face's edges cuts the face it crosses
+                    if any(_edge_on_face(leg, x, tol) for x in t.orig.Edges):
+                        continue
+                    other = next((f for f in shape.Faces if not f.isSame(t.orig)
+                                  and _edge_on_face(leg, f, tol)), None)
+                    if other is None:
+                        raise Unassembled(t.owners, "the region by which its blend's end "
+                                          "extends face %s is not bounded by the solid's "
+                                          "faces" % ck.element_name(shape, t.orig, "Face"))
+                    o = _Touched.of(touched, other, t.owners[0])
+                    o.tools.append(leg)
+                    o.inside.append(leg)
+                    o.legs.append(leg)
+    kept = Part.Compound(result.Edges)
     sharp = [e for e in shape.Edges if not any(e.isSame(r) for r in result.Edges)
-             and _consumed(e, boundary, tol)]
+             and _consumed(e, kept, tol)]
     for t in touched:
         try:
-            pieces = _cut_face(t.orig, t.inside, sharp, t.corners, tol)
-            for section, corner, region in t.grown:  # the fillets' end sections
+            pieces = _cut_face(t.orig, t.inside, sharp, t.legs, tol)
+            for section, whole, corner, region in t.grown:  # the fillets' end sections
                 # extend the face: at each corner, the piece keeping it grows
                 k = next((i for i, f in enumerate(pieces) if any(
                     (v.Point - corner).Length <= tol for v in f.Vertexes)), None)
                 if k is None:
                     raise ValueError("no piece keeps the corner (%.6g, %.6g, %.6g)"
                                      % tuple(corner))
-                pieces[k] = _grown(pieces[k], section, corner, region, tol)
+                pieces[k] = _grown(pieces[k], section, whole, corner, region, tol)
         except Exception as ex:
             raise Unassembled(t.owners, "face %s of the original solid cannot be cut along "
                               "its blend (%s)" % (ck.element_name(shape, t.orig, "Face"),
