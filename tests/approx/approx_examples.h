@@ -207,6 +207,20 @@ static inline void ex_thesis_init(ex_thesis *x, int which)
     x->dom.v0 = 0, x->dom.v1 = 1, x->dom.periodic = 1;
 }
 
+/* The quintic Hermite basis g_1..g_6 at u (thesis eq. 18), written out independently of
+ * the kernel's c2b_poly_hermite: g_l and its first two derivatives are 1 for datum l
+ * (S, S_u, S_uu at u = 0, then at u = 1) and 0 for the others. */
+static inline void ex_hermite5(double u, double g[6])
+{
+    double u2 = u * u, u3 = u2 * u;
+    g[0] = 1 - 10 * u3 + 15 * u2 * u2 - 6 * u3 * u2;
+    g[1] = (1 - 6 * u2 + 8 * u3 - 3 * u2 * u2) * u;
+    g[2] = (0.5 - 1.5 * u + 1.5 * u2 - 0.5 * u3) * u2;
+    g[3] = (10 - 15 * u + 6 * u2) * u3;
+    g[4] = (-4 + 7 * u - 3 * u2) * u3;
+    g[5] = (0.5 - u + 0.5 * u2) * u3;
+}
+
 /* Independent reference for the thesis examples (ex_thesis_init): each of x, y is G(u)
  * times sin/cos(2 pi v), G from the Chebyshev collocation oracle (tests/oracle) for the
  * mode beta = -(2 pi)^2; z is the quintic Hermite polynomial of its constants (thesis
@@ -236,11 +250,8 @@ static inline int ex_oracle_surface(const ex_thesis *x, size_t n, const double *
     for (int l = 0; l < 6; l++)
         zc[l] = x->zc[l / 3][l % 3].c;
     for (size_t i = 0; i < n; i++) {
-        double t = u[i], t2 = t * t, t3 = t2 * t;
-        double g[6] = {1 - 10 * t3 + 15 * t2 * t2 - 6 * t3 * t2, (1 - 6 * t2 + 8 * t3 - 3 * t2 * t2) * t,
-                       (0.5 - 1.5 * t + 1.5 * t2 - 0.5 * t3) * t2, (10 - 15 * t + 6 * t2) * t3,
-                       (-4 + 7 * t - 3 * t2) * t3, (0.5 - t + 0.5 * t2) * t3};
-        double z = 0;
+        double g[6], z = 0;
+        ex_hermite5(u[i], g);
         for (int l = 0; l < 6; l++)
             z += zc[l] * g[l];
         for (size_t j = 0; j < n; j++) {

@@ -10,8 +10,8 @@
 /* Independent of c2b_approx: the best least-squares fit (on values, 1001 points in u) of
  * the exact x(u, 1/4) of eqs. 127-129 by the trial space of eq. 120,
  *   quintic Hermite interpolant + span{m pi (g2 + (-1)^m g5) - sin(m pi u), m <= M},
- * with g2, g5 written out from thesis eq. 18. Returns maxerr(M=10) / maxerr(M=20), the
- * gain of the best approximation. Any method's gain err(10)/err(20) is at most
+ * with g2, g5 written out from thesis eq. 18 (ex_hermite5). Returns maxerr(M=10) /
+ * maxerr(M=20), the gain of the best approximation. Any method's gain err(10)/err(20) is at most
  * err(10)/maxerr(M=20), so it exceeds this ratio only if the method is worse than the best
  * fit at M = 10: a method close to the best fit at both M cannot gain more. */
 #define NB 1001
@@ -24,10 +24,8 @@ static double best_fit_ratio(const c2b_blend *b)
     c2b_blend_eval_grid(b, 2, ub, 1, &v, 2, d, NULL);
     double dat[6] = {d[0], d[3], d[9], d[18], d[21], d[27]}, errs[2];
     for (int i = 0; i < NB; i++) {
-        double x = u[i], x2 = x * x, x3 = x2 * x;
-        double g[6] = {1 - 10 * x3 + 15 * x2 * x2 - 6 * x3 * x2, (1 - 6 * x2 + 8 * x3 - 3 * x2 * x2) * x,
-                       (0.5 - 1.5 * x + 1.5 * x2 - 0.5 * x3) * x2, (10 - 15 * x + 6 * x2) * x3,
-                       (-4 + 7 * x - 3 * x2) * x3, (0.5 - x + 0.5 * x2) * x3};
+        double g[6];
+        ex_hermite5(u[i], g);
         herm[i] = 0;
         for (int l = 0; l < 6; l++)
             herm[i] += dat[l] * g[l];
@@ -36,11 +34,11 @@ static double best_fit_ratio(const c2b_blend *b)
         int M = 10 * (k + 1), jp[20] = {0};
         lapack_int rank;
         for (int i = 0; i < NB; i++) {
-            double x = u[i], x2 = x * x, x3 = x2 * x;
-            double g2 = (1 - 6 * x2 + 8 * x3 - 3 * x2 * x2) * x, g5 = (-4 + 7 * x - 3 * x2) * x3;
+            double g[6];
+            ex_hermite5(u[i], g);
             r[i] = val[3 * i] - herm[i];
             for (int m = 1; m <= M; m++)
-                A[i + NB * (m - 1)] = m * C2B_PI * (g2 + ((m % 2) ? -g5 : g5)) - sin(m * C2B_PI * x);
+                A[i + NB * (m - 1)] = m * C2B_PI * (g[1] + ((m % 2) ? -g[4] : g[4])) - sin(m * C2B_PI * u[i]);
         }
         static double A0[NB * 20];
         memcpy(A0, A, sizeof A);

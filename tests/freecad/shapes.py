@@ -1,5 +1,6 @@
-"""The parts of the workbench tests, built with Part (no files), and a document
-fingerprint for checking that failed operations leave documents unchanged."""
+"""The parts of the workbench tests, built with Part (no files), a document
+fingerprint for checking that failed operations leave documents unchanged, and a
+sewing fault to inject."""
 import hashlib
 import math
 
@@ -500,3 +501,16 @@ def document_state(doc):
                     hashlib.sha1(sh.exportBrepToString().encode()).hexdigest() if sh else None,
                     round(sh.Volume, 9) if sh and sh.Solids else None))
     return out
+
+
+def losing_far_face(sewn, shape, edge):
+    """A stand-in for the fillet's sewing function `sewn` (fillet._sewn) that first loses
+    the face of `shape` farthest from `edge`: the shell then has free edges that touch
+    no blend, so the sewing fails."""
+    far = max(shape.Faces, key=lambda f: f.distToShape(edge)[0]).CenterOfMass
+
+    def lose(faces):
+        lost = min(faces, key=lambda f: f.distToShape(Part.Vertex(far))[0])
+        return sewn([f for f in faces if f is not lost])
+
+    return lose

@@ -253,6 +253,11 @@ def test_document_object_with_c1_and_c3_shape_parameters(doc, continuity, given,
         make.make_fillet(base, [edge], 2.0, "C3", (1, 1, 1, 1, 0))
 
 
+def _shape_of(doc, obj):
+    """[(BREP hash, volume)] of obj's shape, from the document's fingerprint."""
+    return [x[3:] for x in shapes.document_state(doc) if x[0] == obj.Name]
+
+
 def test_failed_recompute_keeps_shape_and_undo_redo(doc):
     if doc.UndoMode == 0:
         pytest.skip("undo and redo need UndoMode 1")
@@ -262,9 +267,7 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
     f.Radius = 30.0
     doc.recompute()
     assert "Invalid" in f.State and "too large" in f.Proxy.last_error
-    def shape_of_f(state):  # (BREP hash, volume) of the fillet object
-        return [x[3:] for x in state if x[0] == f.Name]
-    assert shape_of_f(shapes.document_state(doc)) == shape_of_f(good)
+    assert _shape_of(doc, f) == [x[3:] for x in good if x[0] == f.Name]
     f.Radius = 2.0
     doc.recompute()
     assert shapes.document_state(doc) == good
@@ -281,25 +284,13 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
     assert doc.getObject(name).Verdict == "G2"
 
 
-def _lose_far_face(monkeypatch, shape, edge):
-    """Fault injection into the fillet's sewing: the sewn faces lose the face of `shape`
-    farthest from `edge`, so the shell has free edges that touch no blend."""
-    sewn = fl._sewn
-    far = max(shape.Faces, key=lambda f: f.distToShape(edge)[0]).CenterOfMass
-
-    def lose(faces):
-        lost = min(faces, key=lambda f: f.distToShape(Part.Vertex(far))[0])
-        return sewn([f for f in faces if f is not lost])
-
-    monkeypatch.setattr(fl, "_sewn", lose)
-
-
 def test_failed_sewing_leaves_document_unchanged(doc, monkeypatch):
     """A sewing that fails (injected) while a C2 Fillet is made: the error names the
     object and edge, and the document is left exactly as it was."""
     box = doc.getObject("Box")
     before, undo = shapes.document_state(doc), doc.UndoCount
-    _lose_far_face(monkeypatch, box.Shape, box.Shape.Edge1)
+    monkeypatch.setattr(fl, "_sewn",
+                        shapes.losing_far_face(fl._sewn, box.Shape, box.Shape.Edge1))
     with pytest.raises(C2BlendError, match=r"^Box\.Edge1: sewing the blend faces .* failed"):
         make.make_fillet(box, ["Edge1"], 2.0)
     assert shapes.document_state(doc) == before
@@ -312,16 +303,14 @@ def test_failed_sewing_on_recompute_keeps_the_previous_shape(doc, monkeypatch):
     is applied."""
     box = doc.getObject("Box")
     f = make.make_fillet(box, ["Edge1"], 2.0)
-    def shape_of_f():  # (BREP hash, volume) of the fillet object
-        return [x[3:] for x in shapes.document_state(doc) if x[0] == f.Name]
-
-    good = shape_of_f()
-    _lose_far_face(monkeypatch, box.Shape, box.Shape.Edge1)
+    good = _shape_of(doc, f)
+    monkeypatch.setattr(fl, "_sewn",
+                        shapes.losing_far_face(fl._sewn, box.Shape, box.Shape.Edge1))
     f.Radius = 3.0
     doc.recompute()
     assert "Invalid" in f.State
     assert re.match(r"Box\.Edge1: sewing the blend faces .* failed", f.Proxy.last_error)
-    assert shape_of_f() == good
+    assert _shape_of(doc, f) == good
     monkeypatch.undo()
     f.touch()
     doc.recompute()

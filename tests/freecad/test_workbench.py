@@ -946,14 +946,7 @@ def test_failed_sewing_is_reported(monkeypatch):
     """Fault injection: the sewn faces lose the box's face opposite the fillet, so the
     shell has free edges that touch no blend. The fillet fails, naming the edge."""
     box = shapes.box()
-    sewn = fl._sewn
-    far = max(box.Faces, key=lambda f: f.distToShape(box.Edge1)[0]).CenterOfMass
-
-    def lose_far_face(faces):
-        lost = min(faces, key=lambda f: f.distToShape(Part.Vertex(far))[0])
-        return sewn([f for f in faces if f is not lost])
-
-    monkeypatch.setattr(fl, "_sewn", lose_far_face)
+    monkeypatch.setattr(fl, "_sewn", shapes.losing_far_face(fl._sewn, box, box.Edge1))
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: sewing the blend faces .* failed"):
         C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
 

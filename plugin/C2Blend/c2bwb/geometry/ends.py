@@ -161,14 +161,13 @@ def _slant_tool(edge, face, radius):
     (the rolling ball is tangent to them there) and the trimlines in those faces."""
     a, b = edge.FirstParameter, edge.LastParameter
     ts = [k / SLANT_NODES for k in range(SLANT_NODES + 1)]
+    on = [edge.valueAt(a + (b - a) * t) for t in ts]
+    normals = [frame_at_point(face, p).n for p in on]
     sides = []
     for sign in (-1.0, 1.0):
-        pts = []
-        for t in ts:
-            p = edge.valueAt(a + (b - a) * t)
-            pts.append(p + frame_at_point(face, p).n * (sign * RULING * radius))
         c = Part.BSplineCurve()
-        c.interpolate(Points=pts, Parameters=ts)
+        c.interpolate(Points=[p + n * (sign * RULING * radius) for p, n in zip(on, normals)],
+                      Parameters=ts)
         sides.append(c.toShape())
     return Part.makeRuledSurface(*sides)
 

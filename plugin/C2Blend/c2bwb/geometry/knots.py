@@ -22,7 +22,7 @@ import Part
 
 from .contact import Contact
 from .rollingball import Run, Section
-from .surface import Frame
+from .surface import frame_at_point
 
 MAX_ROOT = 60  # iterations of the bracketed root finder (each halves the bracket at worst)
 
@@ -198,11 +198,8 @@ def _crossing(run, at_end, side, edge, radius):
 def _ball_gap(face):
     """g(p1, p2, c, t): the signed distance of a ball centre c from the surface of
     `face` (along its normal, oriented like the face)."""
-    s = face.Surface
-
     def gap(p1, p2, c, t):
-        u, v = s.parameter(c)
-        f = Frame(face, u, v, s)
+        f = frame_at_point(face, c)
         return (c - f.p).dot(f.n)
 
     return gap
