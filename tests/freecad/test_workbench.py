@@ -2253,22 +2253,83 @@ def test_runs_meeting_at_a_crease_are_sampled_finer(make, runs):
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
-def test_crease_at_an_oblique_knot_line_is_explained():
-    """A fillet along the profile edge of a partial revolution of a cubic B-spline: cut
-    at the surface's knot lines, its runs' blends would meet at creases of 5e-7 to
-    2.6e-6 rad. A helper's analysis: the surface's normal curvature across the fillet
-    (N d_v^2 / |d|^2, N from the profile's second derivative) changes its rate along the
-    fillet where the contact crosses a knot line obliquely, and blends smooth up to the
-    junction cannot follow that; finer data do not help. OCCT's face is kept, and the
-    reason says why (it gave only the crease)."""
+def _normal_jump(shape, edge, n=41):
+    """The largest angle (rad) between the normals of the two faces of `shape` along
+    `edge`, at n points, each face's normal taken at the point's projection on its
+    surface (OCCT's own evaluation, not C2Blend's check)."""
+    faces = shape.ancestorsOfType(edge, Part.Face)
+    assert len(faces) == 2
+    worst = 0.0
+    for t in ck.sample_params(edge, n):
+        p = edge.valueAt(t)
+        na, nb = (f.normalAt(*f.Surface.parameter(p)) for f in faces)
+        worst = max(worst, math.acos(max(-1.0, min(1.0, na.dot(nb)))))
+    return worst
+
+
+def test_crease_at_an_oblique_knot_line_is_measured_and_in_the_verdict():
+    """A fillet along the profile edge of a partial revolution of a cubic B-spline,
+    whose surface is only C2 across its knot lines, which the fillet crosses obliquely.
+    A helper's analysis: the surface's normal curvature across the fillet (N d_v^2 /
+    |d|^2, N from the profile's second derivative) changes its rate along the fillet
+    there, which blends smooth up to the junction cannot follow, and finer data do not
+    help. At R = 1 the fillet is cut at the knot lines into 4 pointwise blends, each G2
+    to both faces, that meet at creases of 5e-7 to 2.6e-6 rad: the report lists each
+    junction's crease, which counts in the verdict (G0). OCCT's own face meets the
+    B-spline face at a larger angle (7.4e-6 rad), measured here with OCCT's normals. At
+    R = 2 the creases would reach 6.8e-5 rad, above fl.JUNCTION_TURN (OCCT's face:
+    3.2e-5), so OCCT's face is kept, and the reason says why."""
     s, edge = shapes.partial_revolution()
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Rev")
     assert_valid(solid)
+    assert rep["kept_occt_faces"] == [] and len(rep["blends"]) == 4
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert len(rep["trimlines"]) == 8 and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert len(rep["junctions"]) == 3 and rep["verdict"] == "G0"
+    creases = [_normal_jump(solid, solid.getElement(j["edge"])) for j in rep["junctions"]]
+    for j, c in zip(rep["junctions"], creases):
+        assert 1e-7 < c < fl.JUNCTION_TURN and j["g1"] == pytest.approx(c, rel=0.05, abs=1e-8)
+        assert j["verdict"] == "G0"
+    lines = ck.format_report(rep)
+    assert sum("meet at a crease" in x and "in the verdict" in x for x in lines) == 3, lines
+    # OCCT's fillet of the same edge: its face meets the B-spline face at a larger angle
+    occt = s.makeFillet(1.0, [s.getElement(edge)])
+    rev = next(f for f in occt.Faces if "Revolution" in type(f.Surface).__name__)
+    fillet_face = next(f for f in occt.Faces if f.Area < 0.5 * rev.Area
+                       and isinstance(f.Surface, Part.BSplineSurface))
+    seam = next(e for e in fillet_face.Edges if any(e.isSame(x) for x in rev.Edges))
+    assert _normal_jump(occt, seam, 201) > 2.0 * max(creases)
+
+    solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Rev")
+    assert_valid(solid)
     assert rep["verdict"] == "G1" and not rep["blends"]
     reason = rep["kept_occt_faces"][0]["reason"]
-    assert re.search(r"would meet at a crease of [0-9.]+e-0[67] rad, which sampling their "
-                     r"data finer \(toward 1e-10\) did not remove: a face's normal curvature "
-                     r"across the fillet changes its rate along it there", reason), reason
+    assert re.search(r"would meet at a crease of [0-9.]+e-05 rad \(at most 2e-05 is "
+                     r"accepted\), which sampling their data finer \(toward 1e-10\) did "
+                     r"not remove: a face's normal curvature across the fillet changes its "
+                     r"rate along it there", reason), reason
+
+
+def test_every_edge_of_a_partial_revolution_is_blended():
+    """All 12 edges of the partial revolution, R = 1. While the two fillets along its
+    profile edges were kept as OCCT's for their creases at the knot lines, the plate
+    fillings at their corners (where OCCT's end sections lie 1e-4 from the blends')
+    folded over by 0.1 to 1.6 rad and every fillet was kept. Now every fillet is blended
+    and the 8 corners filled. Each corner's seams are measured here with OCCT's normals
+    on both sides (_normal_jump) and must be a plate's, within 1e-4 rad, not folded."""
+    s, _ = shapes.partial_revolution()
+    edges = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if not e.Degenerated
+             and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
+    assert len(edges) == 12
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Rev")
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == [] and len(rep["corner_patches"]) == 8
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert all(t["verdict"] == "G2" for t in rep["trimlines"])
+    for c in rep["corner_patches"]:
+        plate = solid.getElement(c["face"])
+        assert max(_normal_jump(solid, e, 21) for e in plate.Edges) < 1e-4, c["where"]
+
 
 def _vertical_edges(s):
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)

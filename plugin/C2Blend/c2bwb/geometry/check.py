@@ -258,6 +258,13 @@ def format_report(rep):
                      "(not a trimline, not in the verdict): %s, normals %.3g rad apart"
                      % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"]))
     for r in rep.get("junctions", []):
+        if r["g1"] > TOL_G1:
+            lines.append("%s (%s): junction of two pointwise blends that meet at a crease, "
+                         "where a side changes face or crosses a knot line (as one only C2 "
+                         "crossed obliquely; never G2; in the verdict): %s, normals %.2e "
+                         "rad apart, edges %.2e apart"
+                         % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"], r["g0"]))
+            continue
         lines.append("%s (%s): junction of two pointwise blends, where a side changes face "
                      "or crosses a knot line (not a trimline, not in the verdict): %s, as "
                      "the faces there; normals %.3g rad apart, curvature jump %.3g"
