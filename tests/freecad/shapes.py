@@ -316,6 +316,23 @@ def spline_extrusion():
     return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
                if any(e.isSame(x) for x in top.Edges)]
 
+def knot_wall_block(offset=0.4):
+    """A 30 x 20 x 15 block whose front wall is a surface of extrusion of a cubic spline
+    through y = 3 sin(x / 5) at x = -5 + offset, offset, 5 + offset, ..., 35 + offset,
+    cut by the block's side planes x = 0 and 30: the wall's knot lines lie `offset` in
+    from the sides, within the mitres of a top-outline fillet of radius above offset.
+    Returns (solid, names of the top face's 4 edges)."""
+    pts = [V(x + offset, 3.0 * math.sin((x + offset) / 5.0), 0) for x in range(-5, 40, 5)]
+    bs = Part.BSplineCurve()
+    bs.interpolate(pts)
+    a, b = pts[0].x, pts[-1].x
+    w = Part.Wire([bs.toShape(), Part.makeLine(pts[-1], V(b, 20, 0)),
+                   Part.makeLine(V(b, 20, 0), V(a, 20, 0)), Part.makeLine(V(a, 20, 0), pts[0])])
+    s = Part.Face(w).extrude(V(0, 0, 15)).common(Part.makeBox(30, 30, 15, V(0, -5, 0)))
+    s = s.removeSplitter()
+    return s, _edges_at(s, 15.0)
+
+
 def partial_revolution():
     """A profile with an interpolated cubic B-spline side, revolved 270 degrees about z:
     the surface of revolution is only C2 across its 3 knot lines, which a fillet along

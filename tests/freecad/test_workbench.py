@@ -2496,6 +2496,39 @@ def test_end_faces_belong_to_the_runs_outer_ends():
     assert with_faces == [(0, 0), (len(runs) - 1, 1)]
 
 
+@pytest.mark.parametrize("offset", [0.1, 0.4])
+def test_a_mitre_across_a_knot_line_is_cut_on_both_runs(offset):
+    """The top outline of a block whose spline wall has a knot line `offset` in from the
+    block's side x = 0, R = 1: the wall's fillet is cut into runs at its knot lines, and
+    at x = 0 the last run is little more than the part traced past OCCT's end, while
+    the mitre with the side's fillet crosses the knot line into the run before it. Its
+    curve is cut on both runs (ends.cut_across_junction); all 4 fillets were kept as
+    OCCT's ("not cut off by the face or fillet there"). The end run keeps a curved
+    triangle that reaches the wall's trimline only. Every trimline's normals, measured
+    with OCCT's (_normal_jump), agree within 1e-7 rad: OCCT's projection onto the
+    wall's surface of extrusion leaves about 2e-8 rad there, even where the report's
+    check, which evaluates the blend at its own parameters, finds 1e-11."""
+    s, names = shapes.knot_wall_block(offset)
+    solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Wall")
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == [], rep["kept_occt_faces"]
+    assert rep["verdict"] == "G2" and rep["solid_check"] == "passes BRepCheck and the BOP check"
+    # 7 runs along the wall (6 knot lines inside it) and 3 other fillets; the end run at
+    # x = 0 reaches one trimline
+    assert len(rep["blends"]) == 10 and len(rep["trimlines"]) == 19
+    for t in rep["trimlines"]:
+        assert _normal_jump(solid, solid.getElement(t["edge"]), 21) < 1e-7, t["edge"]
+    # that run's triangle lies between the side plane and the knot line's section (its
+    # edges' points: a face's BoundBox holds its surface's poles)
+    def xs(face):
+        return [p.x for e in face.Edges for p in e.discretize(Number=21)]
+    faces = {t["blend_face"] for t in rep["trimlines"]}
+    (small,) = [solid.getElement(f) for f in faces if max(xs(solid.getElement(f))) < 1.0]
+    assert min(xs(small)) > -1e-9 and max(xs(small)) < offset + 1.0
+    assert sum(t["blend_face"] == ck.element_name(solid, small, "Face")
+               for t in rep["trimlines"]) == 1
+
+
 def test_mitre_of_a_narrow_and_a_wide_fillet_either_way_round():
     """A wedge whose ridge is a 2-wide face: its long ridge edge and the end edge at
     either end, R = 0.8, meet at a mitre. The end edge's fillet is the narrower there,

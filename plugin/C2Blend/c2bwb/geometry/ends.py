@@ -197,22 +197,76 @@ def cut_edge(surface, scale, tool_face, near, touch=None):
     """The curve where a blend `surface` (u across, v along) crosses the surface T of
     `tool_face`, as an edge (scale: the blend's size, for Newton's stopping test): at
     CUT_NODES + 1 values of u, Newton's method on S(u, v) = T(s, t) for (v, s, t),
-    marching across. It starts at the point of the
-    edges `near` (OCCT's fillet edges where the rolling ball met the tool, close to the
-    cut) nearest to the start side. The points are interpolated by a C2 B-spline in u.
-    touch: None, or (u side, tool's u side) where the two surfaces are tangent (a
-    mitre's end on the face both blends touch); that end is where the two trimlines
-    cross (Newton on S(u side, v) = T(tool side, t)). Returns (edge, largest distance of
-    the curve from either surface between the nodes). Raises ValueError saying why it
-    cannot."""
+    marching across. It starts at the point of the edges `near` (OCCT's fillet edges
+    where the rolling ball met the tool, close to the cut) nearest to the start side.
+    The points are interpolated by a C2 B-spline in u. touch: None, or (u side, tool's
+    u side) where the two surfaces are tangent (a mitre's end on the face both blends
+    touch); that end is where the two trimlines cross (Newton on S(u side, v) =
+    T(tool side, t)). Returns (edge, largest distance of the curve from either surface
+    between the nodes). Raises ValueError saying why it cannot."""
     tool = tool_face.Surface
+    start, x = _start(surface, tool, near, touch)
+    sol = _march(surface, tool, _nodes(start, 1.0 - start), x, scale, touch)
+    return _curve(surface, tool, sol)
+
+
+def cut_across_junction(a, va, b, vb, scale, tool_face, near, touch=None):
+    """A cut curve (cut_edge) that crosses from blend surface `a` into `b` where two runs
+    of a chain meet (a's section at v = va is b's at v = vb): where a knot line of a side
+    face lies within a mitre, the last run is little more than the part traced past
+    OCCT's end, and the mitre curve starts on it and ends on the run before it. It is
+    marched across a until it leaves a's range at va; the point where it crosses the
+    junction section is solved for (Newton on S_a(u, va) = T(s, t) for (u, s, t)), and
+    each part is marched again from there with CUT_NODES intervals. Returns [(edge,
+    off, (u, v) inside the part of a on the start's side of the curve) on a, (edge,
+    off, None) on b]. Raises ValueError when the curve does not cross the junction or
+    cannot be traced."""
+    tool = tool_face.Surface
+    start, x = _start(a, tool, near, touch)
+    lo, hi = a.bounds()[2:4]
+    beyond = (lambda v: v < va) if abs(va - lo) < abs(va - hi) else (lambda v: v > va)
+    us = _nodes(start, 1.0 - start)
+    try:
+        sol = _march(a, tool, us, x, scale, None, stop=lambda q: beyond(q[1]))
+    except ValueError:
+        sol = []
+    if not sol or not beyond(sol[-1][1]) or len(sol) < 2:
+        raise ValueError("the cut curve does not cross into the next run")
+    u0, _, s0, t0 = sol[-2]
+    uj, sj, tj = _newton(lambda y: (a.value(y[0], va) - tool.value(y[1], y[2]),
+                                    (a.getDN(y[0], va, 1, 0), -tool.getDN(y[1], y[2], 1, 0),
+                                     -tool.getDN(y[1], y[2], 0, 1))),
+                         [u0, s0, t0], scale, "the cut curve's crossing of the junction")
+    part_a = _march(a, tool, _nodes(start, uj), x, scale, None)
+    part_b = _march(b, tool, _nodes(uj, 1.0 - start), [vb, sj, tj], scale, touch)
+    # a's part kept: the curved triangle between the curve, the junction and the
+    # trimline at the start; its centroid in (u, v)
+    inside = ((2.0 * start + uj) / 3.0, (part_a[0][1] + 2.0 * va) / 3.0)
+    return [_curve(a, tool, part_a) + (inside,), _curve(b, tool, part_b) + (None,)]
+
+
+def _nodes(u0, u1):
+    """CUT_NODES + 1 values of u from u0 to u1 (both exact)."""
+    return [u0 + (u1 - u0) * k / CUT_NODES for k in range(CUT_NODES)] + [u1]
+
+
+def _start(surface, tool, near, touch):
+    """(start side u, [v, s, t] to start Newton from) of a cut curve (cut_edge): it
+    starts on the side away from a mitre's touching side, at the point of the edges
+    `near` nearest to that side."""
     guesses = [surface.parameter(p) for e in near for p in e.discretize(Number=8)]
     if not guesses:
         raise ValueError("OCCT's fillet has no edge there to start from")
     start = 0.0 if touch is not None and touch[0] == 1.0 else 1.0
-    us = [start + (1.0 - 2.0 * start) * k / CUT_NODES for k in range(CUT_NODES + 1)]
     g = min(guesses, key=lambda q: abs(q[0] - start))
-    x = [g[1]] + list(tool.parameter(surface.value(start, g[1])))
+    return start, [g[1]] + list(tool.parameter(surface.value(start, g[1])))
+
+
+def _march(surface, tool, us, x, scale, touch, stop=None):
+    """[(u, v, s, t)] of the cut curve of `surface` and `tool` at each of `us` in turn,
+    each point by Newton's method from the previous (x: [v, s, t] to start from), the
+    last at the trimlines' crossing where `touch` says so (cut_edge); it ends early at
+    the first point for which stop(point) holds. Raises ValueError."""
     sol = []
     for u in us:
         if touch is not None and u == touch[0]:
@@ -227,7 +281,15 @@ def cut_edge(surface, scale, tool_face, near, touch=None):
                                (surface.getDN(u, y[0], 0, 1), -tool.getDN(y[1], y[2], 1, 0),
                                 -tool.getDN(y[1], y[2], 0, 1))), x, scale, "the cut curve")
         sol.append((u, *x))
-    sol.sort()
+        if stop is not None and stop(sol[-1]):
+            break
+    return sol
+
+
+def _curve(surface, tool, sol):
+    """(edge, off): the C2 B-spline in u through the cut points `sol` (_march) on
+    `surface`, and its largest distance from either surface midway between nodes."""
+    sol = sorted(sol)
     curve = Part.BSplineCurve()
     curve.interpolate(Points=[surface.value(q[0], q[1]) for q in sol],
                       Parameters=[q[0] for q in sol])
@@ -239,10 +301,15 @@ def cut_edge(surface, scale, tool_face, near, touch=None):
     return curve.toShape(), off
 
 
-def _blend_of(face, blends):
-    """Index in `blends` of the blend replacing the rolling-ball face `face`, or None."""
-    return next((k for k, b in enumerate(blends)
-                 if any(face.isSame(g) for g in b.chain.faces)), None)
+def _blend_of(face, blends, near=()):
+    """Index in `blends` of the blend replacing the rolling-ball face `face`, or None.
+    Where several do (the runs of a chain cut at knot lines share OCCT's face), the one
+    nearest to the edges `near`, the end edges of the caller's blend on that face (the
+    first was taken: at the wavy-top block's corner x = 0, the run at x = 40)."""
+    ks = [k for k, b in enumerate(blends) if any(face.isSame(g) for g in b.chain.faces)]
+    if len(ks) > 1 and near:
+        return min(ks, key=lambda k: min(blends[k].full_face.distToShape(e)[0] for e in near))
+    return ks[0] if ks else None
 
 
 def _touch(b, partner):
@@ -282,6 +349,55 @@ def _mitre_cut(b, partner, near, tol):
     return other if first is None else min(first, other, key=lambda c: c[1])
 
 
+def _mitre_cuts(b, partner, near, tol):
+    """[(edge, off, [the blends it cuts])] where blends b and partner meet at a mitre
+    (near: OCCT's edges where b's fillet met the partner's): one edge (_mitre_cut), or,
+    where one of them is the run of a chain at its end and the mitre crosses into the
+    run before it (a knot line within the mitre), an edge on each run
+    (cut_across_junction); that run's probe is then moved into what is kept of it.
+    Raises ValueError."""
+    try:
+        edge, off = _mitre_cut(b, partner, near, tol)
+        if off <= tol:
+            return [(edge, off, [b, partner])]
+        why = ValueError("its cut curve is %.1e off the surfaces" % off)
+    except ValueError as ex:
+        why = ex
+    for run, other in ((b, partner), (partner, b)):
+        step = _next_run(run)
+        if step is None:
+            continue
+        nxt, v_run, v_nxt = step
+        try:
+            (ea, oa, inside), (eb, ob, _) = cut_across_junction(
+                run.surface, v_run, nxt.surface, v_nxt, run.surface_diag, other.full_face,
+                near, _touch(run, other))
+        except ValueError:
+            continue
+        if max(oa, ob) > tol:
+            continue
+        run.probe, run.one_side = run.surface.value(*inside), True
+        return [(ea, oa, [run, other]), (eb, ob, [nxt, other])]
+    raise why
+
+
+def _next_run(run):
+    """(the run before or after `run` across its junction, run's v there, that run's v
+    there) where run is the first or last run of a chain (fillet.solve_runs: group in
+    order), else None."""
+    if not run.group:
+        return None
+    junctions = [e for e in run.ends if e.junction]
+    if len(junctions) != 1:
+        return None
+    at = junctions[0].at
+    k = next(i for i, x in enumerate(run.group) if x is run) + (1 if at else -1)
+    if not 0 <= k < len(run.group):
+        return None
+    nxt = run.group[k]
+    return nxt, run.surface.bounds()[2 + at], nxt.surface.bounds()[3 - at]
+
+
 def trim(blends, original_face):
     """Cut every blend with a trimmed end back: each extended face (b.full_face) is cut
     along its section with the tools of its trimmed ends (the end faces' surfaces, via
@@ -297,25 +413,27 @@ def trim(blends, original_face):
     if failed:
         return failed
     cuts = {id(b): [] for b in todo}
+    cut = list(todo)  # and the runs next to a run whose mitre crosses into them
     for i, b in enumerate(todo):
         tol = CUT_TOL * b.surface_diag
         for e in b.ends:
             if e.across:
                 continue
             for f in e.faces + [None] * (e.slant is not None):  # None: the slant
-                k = None if f is None else _blend_of(f, todo)
+                k = None if f is None else _blend_of(f, todo, e.edges_on(f))
                 if k is not None and k < i:
                     continue  # a mitre's edge is made once, by the first of its blends
                 partner = None if k is None else todo[k]
                 try:
                     if f is None:
-                        edge, off = cut_edge(b.surface, b.surface_diag, e.tool,
-                                             [e.slant])
+                        made = [cut_edge(b.surface, b.surface_diag, e.tool, [e.slant])
+                                + ([b],)]
                     elif partner is None:
-                        edge, off = cut_edge(b.surface, b.surface_diag,
-                                             _tool(original_face(f)), e.edges_on(f))
+                        made = [cut_edge(b.surface, b.surface_diag,
+                                         _tool(original_face(f)), e.edges_on(f)) + ([b],)]
                     else:
-                        edge, off = _mitre_cut(b, partner, e.edges_on(f), tol)
+                        made = _mitre_cuts(b, partner, e.edges_on(f), tol)
+                    off = max(m[1] for m in made)
                     if off > tol:
                         raise ValueError("its cut curve is %.1e off the surfaces" % off)
                 except ValueError as ex:
@@ -325,11 +443,13 @@ def trim(blends, original_face):
                                       else "slanted end of OCCT's fillet at its corner "
                                       "patch", ex)))
                     continue
-                edge.fixTolerance(max(2.0 * off, 1e-7 * b.surface_diag))
-                cuts[id(b)].append(edge)
-                if partner is not None:
-                    cuts[id(partner)].append(edge)
-    for b in todo:
+                for edge, off, owners in made:
+                    edge.fixTolerance(max(2.0 * off, 1e-7 * b.surface_diag))
+                    for x in owners:
+                        cuts.setdefault(id(x), []).append(edge)
+                        if not any(x is y for y in cut):
+                            cut.append(x)
+    for b in cut:
         if any(b is x for x, _ in failed):
             continue
         try:
@@ -353,7 +473,9 @@ def trim(blends, original_face):
 
 
 def side_range(b, side):
-    """(v0, v1): the v-range of the blend's face along its trimline u = side."""
+    """(v0, v1): the v-range of the blend's face along its trimline u = side; None where
+    the face does not reach that side (b.one_side: what is kept of a chain's last run
+    whose mitre crosses into the run before it, cut_across_junction)."""
     if b.face is b.full_face:
         return tuple(b.surface.bounds()[2:4])
     vs = []
@@ -362,4 +484,6 @@ def side_range(b, side):
         uv = [c2d.value(a), c2d.value(z)]
         if all(abs(q.x - side) <= ON_TRIMLINE for q in uv):
             vs += [q.y for q in uv]
-    return (min(vs), max(vs)) if vs else tuple(b.surface.bounds()[2:4])
+    if vs:
+        return min(vs), max(vs)
+    return None if b.one_side else tuple(b.surface.bounds()[2:4])

@@ -194,11 +194,13 @@ class Blended:
     ends.trim); probe: a point inside face; group: None for a whole chain's blend, or
     the pointwise blends of all runs of its chain (solve_runs), which are kept or
     replaced together; source: the FilletChain it replaces (or a run or piece of),
-    which fillet() sets, for the corner patches that chain ends at."""
+    which fillet() sets, for the corner patches that chain ends at; one_side: True when
+    its face reaches one trimline only (ends.cut_across_junction)."""
 
     def __init__(self, chain, ends, where, surface, fit, samples, data_rel):
         self.chain, self.ends, self.where, self.surface, self.fit = chain, ends, where, surface, fit
         self.samples, self.data_rel, self.group, self.source = samples, data_rel, None, None
+        self.one_side = False
         self.full_face = self.face = Part.Face(surface)
         self.surface_diag = self.full_face.BoundBox.DiagonalLength
         sec = chain.sections[len(chain.sections) // 2]
@@ -1070,7 +1072,10 @@ def _trimline_checks(solid, faces, scales):
     diag = solid.BoundBox.DiagonalLength
     for b, face in faces:
         for side in (0.0, 1.0):
-            pts = ck.trimline_points(b.surface, side, v_range=ends.side_range(b, side))
+            v_range = ends.side_range(b, side)
+            if v_range is None:
+                continue  # the face does not reach this side
+            pts = ck.trimline_points(b.surface, side, v_range=v_range)
             probe = Part.Vertex(pts[len(pts) // 2][0])
             nbrs = [f for e in face.Edges for f in ck.edge_faces(solid, e)
                     if not f.isSame(face) and e.distToShape(probe)[0] < 1e-6 * diag]
