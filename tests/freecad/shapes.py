@@ -316,6 +316,7 @@ def spline_extrusion():
     return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
                if any(e.isSame(x) for x in top.Edges)]
 
+
 def knot_wall_block(offset=0.4):
     """A 30 x 20 x 15 block whose front wall is a surface of extrusion of a cubic spline
     through y = 3 sin(x / 5) at x = -5 + offset, offset, 5 + offset, ..., 35 + offset,
