@@ -2,9 +2,11 @@
 """C2 Fillet on a handful of typical parts: what each gives (G2 blend, or OCCT's faces
 kept and why), the worst continuity over its trimlines, whether the solid is valid, the
 time, and the same check on OCCT's own fillet of the same edges. With --validation it also times
-OCCT's validity checks on the filleted shaft-on-plate solid.
+OCCT's validity checks on the filleted shaft-on-plate solid. With --all-edges it fillets
+every edge of some parts instead (the corners filled, the fillets kept and why).
 
-usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py [--validation]
+usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
+       [--validation] [--all-edges]
 """
 import argparse
 import os
@@ -148,6 +150,45 @@ def survey():
                  occt_check(shape, edges, r)))
 
 
+def all_edge_parts():
+    """(name, solid, radius) of each part whose every edge is filleted."""
+    def first(x):
+        return x[0] if isinstance(x, tuple) else x
+    out = [("box 10", Part.makeBox(10, 10, 10), 2.0),
+           ("box 20 x 20 x 10 with a hole", Part.makeBox(20, 20, 10).cut(
+               Part.makeCylinder(3, 10, V(10, 10, 0))), 1.0)]
+    for name, make, radii in (("spline prism", shapes.spline_prism, (1.0,)),
+                              ("spline extrusion", shapes.spline_extrusion, (1.0,)),
+                              ("wavy B-spline top block", shapes.wavy_top_block, (1.0,)),
+                              ("partial revolution", shapes.partial_revolution, (0.5, 1.0, 2.0)),
+                              ("gusset bracket", shapes.gusset_bracket, (0.5, 1.0))):
+        out += [(name, first(make()), r) for r in radii]
+    return out
+
+
+def all_edges():
+    print("| part | R | edges | verdict | valid | blends | kept | corners filled | worst corner "
+          "seam (rad) | solid | s | kept because |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for name, shape, r in all_edge_parts():
+        edges = ["Edge%d" % (i + 1) for i, e in enumerate(shape.Edges) if not e.Degenerated
+                 and not any(e.isSeam(f) for f in shape.ancestorsOfType(e, Part.Face))]
+        t0 = time.perf_counter()
+        try:
+            solid, rep = C2Blend.fillet_report(shape, edges, r)
+        except C2Blend.Error as ex:
+            print("| %s | %g | %d | error |%s %s |" % (name, r, len(edges), " |" * 7, ex))
+            continue
+        kept = [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")]
+        corners = rep["corner_patches"]
+        why = sorted({k["reason"] for k in kept})
+        print("| %s | %g | %d | %s | %s | %d | %d | %d | %s | %s | %.1f | %s |"
+              % (name, r, len(edges), rep["verdict"], solid.isValid(), len(rep["blends"]),
+                 len(kept), len(corners),
+                 "%.1e" % max(c["g1"] for c in corners) if corners else "",
+                 rep["solid_check"], time.perf_counter() - t0, "; ".join(why)))
+
+
 def median_ms(f, n=5):
     ts = []
     for _ in range(n):
@@ -175,7 +216,12 @@ def validation():
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--validation", action="store_true", help="also time OCCT's validity checks")
+    ap.add_argument("--all-edges", action="store_true",
+                    help="fillet every edge of some parts instead")
     a = ap.parse_args()
+    if a.all_edges:
+        all_edges()
+        return
     survey()
     if a.validation:
         validation()
