@@ -171,8 +171,7 @@ def all_edges():
           "seam (rad) | solid | s | kept because |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, shape, r in all_edge_parts():
-        edges = ["Edge%d" % (i + 1) for i, e in enumerate(shape.Edges) if not e.Degenerated
-                 and not any(e.isSeam(f) for f in shape.ancestorsOfType(e, Part.Face))]
+        edges = shapes.every_edge(shape)
         t0 = time.perf_counter()
         try:
             solid, rep = C2Blend.fillet_report(shape, edges, r)

@@ -349,6 +349,13 @@ def partial_revolution():
              if any(e.isSame(x) for x in rev.Edges) and not isinstance(e.Curve, Part.Circle)]
     return s, names[0]
 
+def every_edge(s):
+    """Names of the edges of s that a fillet can take: all but degenerate edges and the
+    seams of closed faces."""
+    return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if not e.Degenerated
+            and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
+
+
 def _edges_at(s, z):
     """Names of the edges of s lying in the plane z (no vertical extent)."""
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)

@@ -2318,8 +2318,7 @@ def test_every_edge_of_a_partial_revolution_is_blended():
     and the 8 corners filled. Each corner's seams are measured here with OCCT's normals
     on both sides (_normal_jump) and must be a plate's, within 1e-4 rad, not folded."""
     s, _ = shapes.partial_revolution()
-    edges = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if not e.Degenerated
-             and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
+    edges = shapes.every_edge(s)
     assert len(edges) == 12
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Rev")
     assert_valid(solid)

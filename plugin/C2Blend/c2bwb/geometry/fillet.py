@@ -59,8 +59,8 @@ JUNCTION_DATA_REL = (1e-9, 1e-10)
 # better: along a partial revolution's profile edge (R = 1) it meets the B-spline face
 # at up to 7.4e-6 rad (3.2e-5 at R = 2; OCCT's normals at 201 points), where the
 # blends are G2 to it and meet at 5e-7 to 2.6e-6 rad (6.8e-5 at R = 2, where OCCT's
-# face is kept). The bound is the plate fillings' target at corners (corners.GOOD_G1).
-JUNCTION_TURN = 2e-5
+# face is kept). The bound is the plate fillings' target at corners.
+JUNCTION_TURN = cn.GOOD_G1
 DATA_KEEP = 1e-6  # above this the boundary data are too rough for G2: keep OCCT's face
 UNCHECKED = "passes BRepCheck; BOP check skipped (preview)"  # the check line, bop=False
 C0_FINDING = "GeomAbs_C0"  # the BOP check's finding on geometry that is only C0
