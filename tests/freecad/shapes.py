@@ -54,6 +54,19 @@ def pipe_tee():
     return s, names
 
 
+def unequal_tee():
+    """A pipe r = 3 along z, from the axis up, on a pipe r = 6 along y (y = -15..15); the
+    big pipe's seam runs along its top (x = 0, z = 6), through the junction. Returns
+    (solid, names of the edges of their intersection curve)."""
+    s = Part.makeCylinder(6, 30, V(0, -15, 0), V(0, 1, 0)).fuse(
+        Part.makeCylinder(3, 12)).removeSplitter()
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if len(s.ancestorsOfType(e, Part.Face)) == 2 and e.BoundBox.ZMin > 5
+             and e.BoundBox.ZMax < 6 + 1e-9 and not e.isSeam(s.ancestorsOfType(e, Part.Face)[0])]
+    assert len(names) == 3, names
+    return s, names
+
+
 def loft():
     """Lofted solid (B-spline side face) through circles r = 10, 6, 8 at z = 0, 10, 20;
     returns (solid, name of the top edge between the B-spline face and the top plane)."""

@@ -278,6 +278,31 @@ def test_pipe_tee_exact_contact():
     assert all(r["g2_rel"] > 0.1 for r in occt["edges"])
 
 
+@pytest.mark.parametrize("radius", [0.3, 0.5])
+def test_trimline_across_a_seam_at_its_own_vertex(radius):
+    """A pipe r = 3 on a pipe r = 6 whose seam crosses the junction (shapes.unequal_tee):
+    the blend's closed trimline on the big pipe starts 2.8e-6 from that seam at R = 0.5.
+    Cutting the face merges the crossing with that vertex, whose tolerance (2e-7) must
+    then be raised: BRepCheck rejected the face and the fillet was kept as OCCT's for
+    R up to 0.55. The trimlines are the ball's exact contact (closed form, as for the
+    pipe tee): its centre lies R out from the big pipe and 3 + R from the z axis."""
+    s, names = shapes.unequal_tee()
+    solid, rep = C2Blend.fillet_report(s, names, radius, label="Tee")
+    assert_valid(solid)
+    assert all(f.isValid() for f in solid.Faces)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 1
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    for p, q in trimline_samples(solid, rep):
+        big, small = (p, q) if abs(math.hypot(p.x, p.z) - 6) < abs(math.hypot(q.x, q.z) - 6) \
+            else (q, p)
+        assert math.hypot(big.x, big.z) == pytest.approx(6, abs=1e-6)
+        assert math.hypot(small.x, small.y) == pytest.approx(3, abs=1e-6)
+        centre = big + V(big.x, 0, big.z) * (radius / 6)
+        assert math.hypot(centre.x, centre.y) == pytest.approx(3 + radius, abs=1e-6)
+        assert (centre - V(centre.x, centre.y, 0) * (radius / (3 + radius)) - small).Length < 1e-6
+
+
 def test_sphere_cap_exact_contact():
     """A sphere r = 6 cut at z = 2, top edge filleted at R = 1: the ball's centre is 5
     from the origin at z = 1, so it touches the plane on the circle of radius sqrt(24)

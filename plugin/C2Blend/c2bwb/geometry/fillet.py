@@ -645,23 +645,63 @@ def _update_tolerances(edges):
     either curve (_samples): the distance peaks between the 129 nodes of a mitre's cut
     curve, which 101 samples missed (1.15e-7 against 4e-8 found, on a box's four top
     edges at R = 4), and inside the short spans where a toNurbs() pcurve's knots
-    cluster (3.9e-7 against 9.6e-8 found, on a wall running into a cylinder)."""
+    cluster (3.9e-7 against 9.6e-8 found, on a wall running into a cylinder).
+    Then raise the tolerance of each of their vertices to twice its distance from the
+    ends of the curves there (_vertex_gap): cutting a face along a closed trimline
+    merges the point where the trimline crosses the face's seam with the trimline's
+    own vertex when they are closer than the cut's fuzzy value, and the seam's pieces
+    then end up to that far from their vertex (2.8e-6 against 2e-7, where a pipe
+    r = 3 meets one of r = 6, filleted at R = 0.5: BRepCheck rejected the face)."""
     for e in edges:
         if e.Degenerated:  # a pole: no 3D curve to compare with
             continue
         worst = 0.0
-        for k in range(8):
-            try:
-                c2, surf, place, a, b = e.curveOnSurface(k)
-            except (TypeError, ValueError, RuntimeError, IndexError):
-                break
+        for c2, surf, place, a, b in _pcurves(e):
             for t in _samples(a, b, (c2, e.Curve)):
-                uv = c2.value(t)
-                q = surf.value(uv.x, uv.y)
-                q = place.multVec(q) if place else q
-                worst = max(worst, (q - e.valueAt(t)).Length)
+                worst = max(worst, (_on(surf, place, c2.value(t)) - e.valueAt(t)).Length)
         if 2.0 * worst > e.Tolerance:
             e.fixTolerance(2.0 * worst)
+    for e in edges:
+        if e.Degenerated:
+            continue
+        for v, gap in _vertex_gap(e):
+            if 2.0 * gap > v.Tolerance:
+                v.fixTolerance(2.0 * gap)
+
+
+def _pcurves(edge):
+    """[(2D curve, surface, placement or None, first, last)] of each of edge's curves
+    on the faces it bounds."""
+    out = []
+    for k in range(8):  # FreeCAD 0.20 returns None past the last, or raises
+        try:
+            c = edge.curveOnSurface(k)
+        except (ValueError, RuntimeError, IndexError):
+            break
+        if c is None:
+            break
+        out.append(c)
+    return out
+
+
+def _on(surf, place, uv):
+    """The point of surface `surf` (placed by `place` when not None) at uv."""
+    q = surf.value(uv.x, uv.y)
+    return place.multVec(q) if place else q
+
+
+def _vertex_gap(edge):
+    """[(vertex, distance)] for the first and the last vertex of `edge`: the largest
+    distance from it of the edge's 3D curve and curves on faces at the end it bounds
+    (the first vertex bounds the curve's start, the last its end)."""
+    out = []
+    for k, vertex in enumerate((edge.firstVertex(), edge.lastVertex())):
+        gap = (edge.valueAt(edge.LastParameter if k else edge.FirstParameter)
+               - vertex.Point).Length
+        for c2, surf, place, a, b in _pcurves(edge):
+            gap = max(gap, (_on(surf, place, c2.value(b if k else a)) - vertex.Point).Length)
+        out.append((vertex, gap))
+    return out
 
 
 class _Touched:
