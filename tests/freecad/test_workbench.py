@@ -1346,12 +1346,13 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     """OCCT's BOP check of a filleted box once never finished (at tension 1.0008 on the
     12-edge box: its face-face intersection of a blend and the plate filling at one
     corner walked without end). That filling changed since, so the stuck check is
-    injected: every check of a shape holding the first plate filling made raises
-    Unfinished, as the check server's time limit does. The fillings whose neighbourhood
-    check is stuck are then found and made again with the next trial, and the solid
-    passes the real check."""
-    real_fill, real_checked, real_stuck = fl.cn.fill, fl.bc._checked, fl.bc.stuck
-    made, found = [], []
+    injected: a shape holding the first plate filling made is never delivered to the
+    check server, which then stays silent as in that loop. The check of the whole
+    solid is given up as soon as that filling's neighbourhood, checked alongside by a
+    second server, passes its own time limit; the filling is made again with the next
+    trial, and the solid passes the real check."""
+    real_fill, real_send = fl.cn.fill, fl.bc._Server.send
+    made, given_up = [], []
 
     def fill(*args):
         made.append(real_fill(*args))
@@ -1363,26 +1364,58 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
                    and (f.CenterOfMass - face.CenterOfMass).Length < 1e-9
                    for f in shape.Faces)
 
-    def checked(shape, seconds, meanwhile=None):
-        if poisoned(shape):
-            if meanwhile:
-                meanwhile()
-            raise fl.bc.Unfinished("OCCT's BOP check did not finish within %.0f s" % seconds)
-        return real_checked(shape, seconds, meanwhile)
+    def send(server, shape):
+        if not poisoned(shape):
+            real_send(server, shape)
 
-    def stuck(*args):
-        found.append(real_stuck(*args))
-        return found[-1]
+    real_problems = fl.bc.problems
+
+    def problems(*args, **kwargs):
+        try:
+            return real_problems(*args, **kwargs)
+        except fl.bc.Unfinished as ex:
+            given_up.append(ex)
+            raise
 
     monkeypatch.setattr(fl.cn, "fill", fill)
-    monkeypatch.setattr(fl.bc, "_checked", checked)
-    monkeypatch.setattr(fl.bc, "stuck", stuck)
+    monkeypatch.setattr(fl.bc._Server, "send", send)
+    monkeypatch.setattr(fl.bc, "problems", problems)
+    monkeypatch.setattr(fl.bc, "NEAR_LIMIT", 3.0)
+    monkeypatch.setattr(fl.bc, "WATCH_AFTER", 1.0)
     box = shapes.box()
     edges = ["Edge%d" % (i + 1) for i in range(12)]
     solid, rep = C2Blend.fillet_report(box, edges, 2.0, label="Box")
-    assert [len(f) for f in found] == [1]  # one corner's check was stuck
+    # one corner's neighbourhood check was stuck, and the whole check stopped with it
+    assert [len(ex.stuck) for ex in given_up] == [1]
+    assert "within 3 s on the neighbourhood of a plate filling" in str(given_up[0])
     assert len(made) == 9  # eight corners, one of them filled again
     assert made[8][1] != made[0][1] and not poisoned(solid)
+    assert_valid(solid)
+    assert_corner_filled(rep, 12, 8)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
+def test_a_real_stuck_bop_check_is_found_alongside(monkeypatch):
+    """A 20 x 20 x 10 box with every edge filleted at R = 0.5: OCCT's BOP check of the
+    solid walks without end on one corner's plate filling (measured: past 40 s, where
+    the remade solid is checked in 6 s). The neighbourhood of that filling, checked
+    alongside, is found stuck, the whole check is given up without waiting for its own
+    30 s, and the remade solid passes it."""
+    real_problems, given_up = fl.bc.problems, []
+
+    def problems(*args, **kwargs):
+        try:
+            return real_problems(*args, **kwargs)
+        except fl.bc.Unfinished as ex:
+            given_up.append(ex)
+            raise
+
+    monkeypatch.setattr(fl.bc, "problems", problems)
+    box = Part.makeBox(20, 20, 10)
+    solid, rep = C2Blend.fillet_report(box, ["Edge%d" % (i + 1) for i in range(12)], 0.5,
+                                       label="Box")
+    assert len(given_up) == 1 and len(given_up[0].stuck) == 1
+    assert "on the neighbourhood of a plate filling" in str(given_up[0])
     assert_valid(solid)
     assert_corner_filled(rep, 12, 8)
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"

@@ -831,16 +831,17 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     if not bop:
         problems, line = bc.problems(solid, bop=False, meanwhile=overlap), UNCHECKED
     while bop:
+        # OCCT's intersection may loop on a plate filling and a blend (seen): their
+        # neighbourhoods are checked alongside, and a filling where it is stuck is
+        # remade with the next trial
+        faces = [_patch_face(solid, f.patch) for f in fills]
         try:
-            problems = bc.problems(solid, meanwhile=overlap if solid is first else None)
+            problems = bc.problems(solid, meanwhile=overlap if solid is first else None,
+                                   suspects=faces)
             line = "passes BRepCheck and the BOP check"
             break
         except bc.Unfinished as ex:
-            # OCCT's intersection loops: on a plate filling and a blend (seen), remade
-            # with the next trial where its neighbourhood's check is stuck
-            faces = [_patch_face(solid, f.patch) for f in fills]
-            stuck = bc.stuck(solid, faces, bc.NEAR_LIMIT)
-            redo = [f for f, g in zip(fills, faces) if any(g.isSame(x) for x in stuck)]
+            redo = [f for f, g in zip(fills, faces) if any(g.isSame(x) for x in ex.stuck)]
             if not redo or not all(f.refill() for f in redo):
                 problems = bc.problems(solid, bop=False)
                 line = ("passes BRepCheck, but %s (it loops on faces tangent along an "
