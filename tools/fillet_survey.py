@@ -68,6 +68,8 @@ def parts():
     out.append(("shaft of two half cylinders", s, n, 2.0))
     t, n = shapes.pipe_tee()
     out.append(("pipe tee", t, n, 1.0))
+    t, n = shapes.unequal_tee()
+    out.append(("pipe r = 3 on r = 6, across its seam", t, n, 0.5))
     sp = Part.makeSphere(6).cut(Part.makeBox(20, 20, 20, V(-10, -10, 2)))
     out.append(("sphere cap", sp, names(sp, lambda e: not e.Degenerated
                                         and len(sp.ancestorsOfType(e, Part.Face)) == 2
@@ -156,7 +158,9 @@ def all_edge_parts():
         return x[0] if isinstance(x, tuple) else x
     out = [("box 10", Part.makeBox(10, 10, 10), 2.0),
            ("box 20 x 20 x 10 with a hole", Part.makeBox(20, 20, 10).cut(
-               Part.makeCylinder(3, 10, V(10, 10, 0))), 1.0)]
+               Part.makeCylinder(3, 10, V(10, 10, 0))), 1.0),
+           ("box 20 x 20 x 10 (a BOP check loop at one corner)", Part.makeBox(20, 20, 10),
+            0.5)]
     for name, make, radii in (("spline prism", shapes.spline_prism, (1.0,)),
                               ("spline extrusion", shapes.spline_extrusion, (1.0,)),
                               ("wavy B-spline top block", shapes.wavy_top_block, (1.0,)),

@@ -637,7 +637,7 @@ def _samples(a, b, curves, per_span=8, n=100):
     return sorted(ts)
 
 
-def _update_tolerances(edges):
+def _update_tolerances(edges, fuzzy):
     """Raise the tolerance of each of `edges` to twice the largest distance between
     its 3D curve and its curves on the faces (what the BOP check measures, by
     optimisation), where the new pcurves made by cutting and sewing are further off
@@ -647,11 +647,14 @@ def _update_tolerances(edges):
     edges at R = 4), and inside the short spans where a toNurbs() pcurve's knots
     cluster (3.9e-7 against 9.6e-8 found, on a wall running into a cylinder).
     Then raise the tolerance of each of their vertices to twice its distance from the
-    ends of the curves there (_vertex_gap): cutting a face along a closed trimline
-    merges the point where the trimline crosses the face's seam with the trimline's
-    own vertex when they are closer than the cut's fuzzy value, and the seam's pieces
-    then end up to that far from their vertex (2.8e-6 against 2e-7, where a pipe
-    r = 3 meets one of r = 6, filleted at R = 0.5: BRepCheck rejected the face)."""
+    ends of the curves there (_vertex_gap), where that is at most `fuzzy`, the fuzzy
+    value of the faces' cut (_cut_face): cutting a face along a closed trimline merges
+    the point where the trimline crosses the face's seam with the trimline's own
+    vertex when they are closer than that, and the seam's pieces then end up to that
+    far from their vertex (2.8e-6 against 2e-7, where a pipe r = 3 meets one of r = 6,
+    filleted at R = 0.5: BRepCheck rejected the face). Wider gaps are no artefact of
+    the cut, and BRepCheck is left to find them (blends ending 1e-4 from where they
+    should, test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts)."""
     for e in edges:
         if e.Degenerated:  # a pole: no 3D curve to compare with
             continue
@@ -665,7 +668,7 @@ def _update_tolerances(edges):
         if e.Degenerated:
             continue
         for v, gap in _vertex_gap(e):
-            if 2.0 * gap > v.Tolerance:
+            if 2.0 * gap > v.Tolerance and gap <= fuzzy:
                 v.fixTolerance(2.0 * gap)
 
 
@@ -825,7 +828,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         fills = [_Fill(shells[0], p, loop, _at_corner(p, blended))
                  for p, loop in zip(patches, loops)]
     solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
-                    result, where, blended)
+                    result, where, blended, tol)
     first = solid
     overlap = (lambda: meanwhile(first)) if meanwhile else None
     if not bop:
@@ -850,7 +853,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                            % ", ".join(f.patch.where() for f in redo) if redo else ""))
                 break
             solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where,
-                            blended)
+                            blended, tol)
     orig = _input_problems(shape) if problems else None
     inherited = _inherited(problems, orig, solid) if problems else None
     if inherited:
@@ -967,12 +970,13 @@ class _Fill:
         return True
 
 
-def _closed(shells, result, where, blended):
+def _closed(shells, result, where, blended, fuzzy):
     """The solid bounded by the one closed shell of `shells`, facing outwards, with the
     tolerance of each edge not in `result` (OCCT's fillet) raised to its pcurves'
-    deviation. A sewing that left free edges raises Unassembled for the blends (of
-    `blended`) those edges touch, which are then kept as OCCT's, or C2BlendError when
-    they touch none."""
+    deviation, and of its vertices to the gaps up to `fuzzy` (the faces' cut's) that
+    the cut leaves there (_update_tolerances). A sewing that left free edges raises
+    Unassembled for the blends (of `blended`) those edges touch, which are then kept as
+    OCCT's, or C2BlendError when they touch none."""
     if len(shells) != 1 or not shells[0].isClosed():
         free = [e for s in shells for e in s.Edges
                 if len(s.ancestorsOfType(e, Part.Face)) == 1
@@ -1001,7 +1005,7 @@ def _closed(shells, result, where, blended):
     # were): the blends' edges, and an original face's other edges, rebuilt by the cut
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
     old = {e.hashCode() for e in result.Edges}
-    _update_tolerances([e for e in solid.Edges if e.hashCode() not in old])
+    _update_tolerances([e for e in solid.Edges if e.hashCode() not in old], fuzzy)
     return solid
 
 
