@@ -1355,6 +1355,22 @@ def test_boss_into_wall_every_edge():
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
+def unfinished_checks(monkeypatch):
+    """The list to which each Unfinished that the BOP check (bopcheck.problems) raises
+    from now on is appended."""
+    real, out = fl.bc.problems, []
+
+    def problems(*args, **kwargs):
+        try:
+            return real(*args, **kwargs)
+        except fl.bc.Unfinished as ex:
+            out.append(ex)
+            raise
+
+    monkeypatch.setattr(fl.bc, "problems", problems)
+    return out
+
+
 def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     """OCCT's BOP check of a filleted box once never finished (at tension 1.0008 on the
     12-edge box: its face-face intersection of a blend and the plate filling at one
@@ -1365,7 +1381,7 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     second server, passes its own time limit; the filling is made again with the next
     trial, and the solid passes the real check."""
     real_fill, real_send = fl.cn.fill, fl.bc._Server.send
-    made, given_up = [], []
+    made = []
 
     def fill(*args):
         made.append(real_fill(*args))
@@ -1381,18 +1397,9 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
         if not poisoned(shape):
             real_send(server, shape)
 
-    real_problems = fl.bc.problems
-
-    def problems(*args, **kwargs):
-        try:
-            return real_problems(*args, **kwargs)
-        except fl.bc.Unfinished as ex:
-            given_up.append(ex)
-            raise
-
     monkeypatch.setattr(fl.cn, "fill", fill)
     monkeypatch.setattr(fl.bc._Server, "send", send)
-    monkeypatch.setattr(fl.bc, "problems", problems)
+    given_up = unfinished_checks(monkeypatch)
     monkeypatch.setattr(fl.bc, "NEAR_LIMIT", 3.0)
     monkeypatch.setattr(fl.bc, "WATCH_AFTER", 1.0)
     box = shapes.box()
@@ -1414,16 +1421,7 @@ def test_a_real_stuck_bop_check_is_found_alongside(monkeypatch):
     the remade solid is checked in 6 s). The neighbourhood of that filling, checked
     alongside, is found stuck, the whole check is given up without waiting for its own
     30 s, and the remade solid passes it."""
-    real_problems, given_up = fl.bc.problems, []
-
-    def problems(*args, **kwargs):
-        try:
-            return real_problems(*args, **kwargs)
-        except fl.bc.Unfinished as ex:
-            given_up.append(ex)
-            raise
-
-    monkeypatch.setattr(fl.bc, "problems", problems)
+    given_up = unfinished_checks(monkeypatch)
     box = Part.makeBox(20, 20, 10)
     solid, rep = C2Blend.fillet_report(box, ["Edge%d" % (i + 1) for i in range(12)], 0.5,
                                        label="Box")
