@@ -362,6 +362,7 @@ def partial_revolution():
              if any(e.isSame(x) for x in rev.Edges) and not isinstance(e.Curve, Part.Circle)]
     return s, names[0]
 
+
 def every_edge(s):
     """Names of the edges of s that a fillet can take: all but degenerate edges and the
     seams of closed faces."""

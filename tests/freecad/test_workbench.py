@@ -1014,7 +1014,7 @@ def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts(monkeypatch, ver
     vertices), and the same fillets are kept for them."""
     monkeypatch.setattr(fl, "at_corner_balls", lambda chain, at_ends, radius: chain)
     if vertex_gaps == "left":
-        monkeypatch.setattr(fl, "_vertex_gap", lambda edge: [])
+        monkeypatch.setattr(fl, "_vertex_gap", lambda edge, pcurves: [])
     s, _ = shapes.spline_extrusion()
     edges = ["Edge%d" % i for i in range(5, 13)]  # the top's 4 edges, the 4 vertical
     assert sorted(round(s.getElement(e).BoundBox.ZMin) for e in edges if

@@ -658,16 +658,14 @@ def _update_tolerances(edges, fuzzy):
     for e in edges:
         if e.Degenerated:  # a pole: no 3D curve to compare with
             continue
+        pcurves = _pcurves(e)
         worst = 0.0
-        for c2, surf, place, a, b in _pcurves(e):
+        for c2, surf, place, a, b in pcurves:
             for t in _samples(a, b, (c2, e.Curve)):
                 worst = max(worst, (_on(surf, place, c2.value(t)) - e.valueAt(t)).Length)
         if 2.0 * worst > e.Tolerance:
             e.fixTolerance(2.0 * worst)
-    for e in edges:
-        if e.Degenerated:
-            continue
-        for v, gap in _vertex_gap(e):
+        for v, gap in _vertex_gap(e, pcurves):
             if 2.0 * gap > v.Tolerance and gap <= fuzzy:
                 v.fixTolerance(2.0 * gap)
 
@@ -693,15 +691,15 @@ def _on(surf, place, uv):
     return place.multVec(q) if place else q
 
 
-def _vertex_gap(edge):
+def _vertex_gap(edge, pcurves):
     """[(vertex, distance)] for the first and the last vertex of `edge`: the largest
-    distance from it of the edge's 3D curve and curves on faces at the end it bounds
-    (the first vertex bounds the curve's start, the last its end)."""
+    distance from it of the edge's 3D curve and its `pcurves` (_pcurves) at the end it
+    bounds (the first vertex bounds the curve's start, the last its end)."""
     out = []
     for k, vertex in enumerate((edge.firstVertex(), edge.lastVertex())):
         gap = (edge.valueAt(edge.LastParameter if k else edge.FirstParameter)
                - vertex.Point).Length
-        for c2, surf, place, a, b in _pcurves(edge):
+        for c2, surf, place, a, b in pcurves:
             gap = max(gap, (_on(surf, place, c2.value(b if k else a)) - vertex.Point).Length)
         out.append((vertex, gap))
     return out
