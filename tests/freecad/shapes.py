@@ -508,6 +508,25 @@ def freeform_boss():
                    if isinstance(e.Curve, Part.BSplineCurve) and abs(e.BoundBox.ZMin - 8) < 1e-6)
 
 
+def periodic_loft(n=24):
+    """A loft through six circles of n points (radius 4 + 1.5 sin(z / 3) at z = 2, 4, ...,
+    12), each interpolated by FreeCAD 0.20's periodic interpolate, which makes its first
+    knot double: the loft's B-spline face is clamped and closed in u, and only G1 across
+    its seam u = 0. The loft stands on a 40 x 40 x 5 plate. Returns (solid, name of the
+    junction edge), the face's seam meeting that edge at its vertex."""
+    ws = []
+    for z in range(2, 13, 2):
+        r = 4 + 1.5 * math.sin(z / 3.0)
+        c = Part.BSplineCurve()
+        c.interpolate([V(r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n),
+                         z) for k in range(n)], PeriodicFlag=True)
+        ws.append(Part.Wire(c.toShape()))
+    s = Part.makeBox(40, 40, 5, V(-20, -20, 0)).fuse(Part.makeLoft(ws, True)).removeSplitter()
+    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                   if abs(e.BoundBox.ZMin - 5) < 1e-6 and abs(e.BoundBox.ZMax - 5) < 1e-6
+                   and abs(e.BoundBox.XMax) < 7)
+
+
 def wavy_top_block():
     """A 40 x 30 x 20 block whose top is cut by a cubic B-spline surface interpolated
     over a 5 mm grid from x = -5 to 45, z = 15 + 2 sin(x / 6): its knot lines run every

@@ -2322,6 +2322,79 @@ def test_runs_meeting_at_a_crease_are_sampled_finer(make, runs):
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
+def _seam_curvatures(face, v, h=1e-4):
+    """The curvatures of face's u-isoline at v just after its seam u = u0 and just before
+    u1, each from the circle through three of its points h apart (in u): a finite-
+    difference measure, independent of OCCT's curvature evaluation."""
+    def circle(a, b, c):
+        ab, bc, ca = (b - a).Length, (c - b).Length, (a - c).Length
+        return 2.0 * (b - a).cross(c - a).Length / (ab * bc * ca)
+    s = face.Surface
+    u0, u1 = s.bounds()[:2]
+    return (circle(*(s.value(u0 + k * h, v) for k in range(3))),
+            circle(*(s.value(u1 - k * h, v) for k in range(3))))
+
+
+def test_a_loft_only_g1_at_its_seam_is_filleted_with_the_crease_there_explained():
+    """A loft through closed curves from FreeCAD 0.20's periodic interpolate (24 points
+    per circle) is only G1 across its seam: the first knot of each curve is double. Its
+    junction with a plate, R = 1: the data are rough, and the chain was cut at the 23
+    interior knot lines only (the clamped seam was no knot line), so they stayed rough and
+    OCCT's face was kept. The seam is now a knot line too: 24 pointwise blends, G2 to both
+    faces on every trimline. They meet within 1e-8 rad at the 23 knot lines where the loft
+    is C2, and at a crease of about 1e-6 rad at the seam, which is in the verdict (G0): no
+    fillet is G2 on both sides of a face's own curvature jump. The report measures that
+    jump, as the finite-difference curvatures of the loft's u-isoline on either side of the
+    seam give it (within 10%), and says it is the face's own."""
+    s, edge = shapes.periodic_loft(24)
+    solid, rep = fl.fillet(s, [edge], 1.0, label="Part")
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == [] and len(rep["blends"]) == 24
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert all(t["verdict"] == "G2" for t in rep["trimlines"]) and rep["trimlines"]
+    junctions = sorted(rep["junctions"], key=lambda j: j["g1"])
+    assert len(junctions) == 24
+    assert max(j["g1"] for j in junctions[:-1]) < ck.TOL_G1
+    assert max(j["side_curvature_jump"] for j in junctions[:-1]) < 1e-6
+    seam = junctions[-1]
+    assert ck.TOL_G1 < seam["g1"] < fl.JUNCTION_TURN
+    assert rep["verdict"] == "G0"
+    loft = next(f for f in s.Faces if isinstance(f.Surface, Part.BSplineSurface))
+    p = min((v.Point for v in solid.getElement(seam["edge"]).Vertexes),
+            key=lambda q: loft.distToShape(Part.Vertex(q))[0])
+    u, v = loft.Surface.parameter(p)
+    u0, u1 = loft.Surface.bounds()[:2]
+    assert min(u - u0, u1 - u) < 1e-6 * (u1 - u0)  # the crease is at the seam
+    ka, kb = _seam_curvatures(loft, v)
+    expected = abs(ka - kb) / max(ka, kb)
+    assert expected > 0.05
+    assert abs(seam["side_curvature_jump"] - expected) < 0.1 * expected
+    assert "only G1 across its knot line or seam" in C2Blend.format_report(rep)
+
+
+def test_a_crease_too_large_at_a_seam_only_g1_keeps_occts_face_and_says_why():
+    """The same loft through 12-point circles: the blends would meet at the seam at a
+    crease of 2.1e-5 rad, above fl.JUNCTION_TURN, so OCCT's face is kept. The reason
+    said the face's curvature changed its rate there (as at a knot line crossed
+    obliquely); it now says that the face's own curvature jumps there (the loft is only
+    G1 across its seam: 0.3 relative, by the finite-difference curvatures above). The
+    solid is then OCCT's own, which passes BRepCheck but not the BOP check (its fillet
+    face is only C0), and the report says so."""
+    s, edge = shapes.periodic_loft(12)
+    solid, rep = fl.fillet(s, [edge], 1.0, label="Part")
+    assert solid.isValid() and solid.Volume > 0
+    assert rep["solid_check"].startswith("OCCT's rolling-ball solid, unchanged")
+    assert "GeomAbs_C0" in rep["solid_check"]
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    reason = rep["kept_occt_faces"][0]["reason"]
+    m = re.search(r"own curvature jumps by ([0-9.e+-]+) \(relative\) there: it is only G1 "
+                  r"across its knot line or seam", reason)
+    assert m, reason
+    loft = next(f for f in s.Faces if isinstance(f.Surface, Part.BSplineSurface))
+    ka, kb = _seam_curvatures(loft, loft.Surface.parameter(shapes.V(0, 0, 6))[1])
+    assert abs(float(m.group(1)) - abs(ka - kb) / max(ka, kb)) < 0.15 * abs(ka - kb) / max(ka, kb)
+
+
 def _normal_jump(shape, edge, n=41):
     """The largest angle (rad) between the normals of the two faces of `shape` along
     `edge`, at n points, each face's normal taken at the point's projection on its

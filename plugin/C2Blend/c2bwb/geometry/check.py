@@ -30,6 +30,7 @@ TOL_G0 = 1e-6     # model units, and at least the edge tolerance
 TOL_G0_REL = 1e-10  # of the diagonal: the g0 tolerance of large parts
 TOL_G1 = 1e-8     # rad
 TOL_G2 = 1e-6     # relative curvature jump
+SIDE_JUMP = 1e-5  # a face's own relative curvature jump across a knot line (format_report)
 
 
 def edge_faces(shape, edge):
@@ -245,6 +246,14 @@ def check(shape, edges, samples=101, label="Shape"):
     return {"edges": out, "verdict": verdict}
 
 
+def side_jump_words(jump):
+    """Why two blends meet at a crease where a side face's own principal curvatures jump
+    by `jump` (relative, knots.side_jump), for reports and reasons."""
+    return ("a side face's own curvature jumps by %.2g (relative) there: it is only G1 "
+            "across its knot line or seam (as at the start of a closed curve from FreeCAD "
+            "0.20's periodic interpolate), so no fillet is G2 to it on both sides" % jump)
+
+
 def format_report(rep):
     """Human-readable lines for the Report view, of a check report (check()) or of a
     fillet or blend report (its trimlines, corner fillings and the OCCT faces it kept)."""
@@ -264,6 +273,8 @@ def format_report(rep):
                          "crossed obliquely; never G2; in the verdict): %s, normals %.2e "
                          "rad apart, edges %.2e apart"
                          % (r["edge"], "/".join(r["faces"]), r["verdict"], r["g1"], r["g0"]))
+            if r.get("side_curvature_jump", 0.0) > SIDE_JUMP:
+                lines[-1] += "; " + side_jump_words(r["side_curvature_jump"])
             continue
         lines.append("%s (%s): junction of two pointwise blends, where a side changes face "
                      "or crosses a knot line (not a trimline, not in the verdict): %s, as "

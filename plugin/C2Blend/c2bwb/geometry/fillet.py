@@ -43,7 +43,7 @@ from .contact import Contact, ContactError
 from . import bopcheck as bc
 from . import corners as cn
 from . import ends
-from .knots import at_corner_balls, at_face_changes, split_at_knots
+from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
 from .surface import Frame, angle, frame_at_point, off_surface, project
@@ -339,14 +339,19 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
                               "both there (the blends of the two runs would be %.1e apart)"
                               % gap)
         if turn > JUNCTION_TURN:
+            sa, va = blends[i].surface, blends[i].surface.bounds()[3]
+            jump = side_jump([sa.value(0.0, va), sa.value(1.0, va)],
+                             list(runs[i].sides) + list(runs[j].sides))
+            why = (ck.side_jump_words(jump) if jump > ck.SIDE_JUMP else
+                   "a face's normal curvature across the fillet changes its rate along it "
+                   "there (as on a face only C2 across a knot line that the contact crosses "
+                   "obliquely), which two blends, each smooth up to the junction, cannot "
+                   "follow")
             raise NotReplaced("where a side changes face or crosses a knot line, the blends "
                               "of the two runs would meet at a crease of %.1e rad (at most "
                               "%.0e is accepted), which sampling their data finer (toward "
-                              "%.0e) did not remove: a face's normal curvature across the "
-                              "fillet changes its rate along it there (as on a face only C2 "
-                              "across a knot line that the contact crosses obliquely), which "
-                              "two blends, each smooth up to the junction, cannot follow"
-                              % (turn, JUNCTION_TURN, JUNCTION_DATA_REL[-1]))
+                              "%.0e) did not remove: %s"
+                              % (turn, JUNCTION_TURN, JUNCTION_DATA_REL[-1], why))
     for b in blends:
         b.group = blends
     return blends
@@ -1138,7 +1143,9 @@ def _trimline_checks(solid, faces, scales):
 def _shared_edge_checks(solid, faces, junctions, scales):
     """Continuity across the edges where two blends meet: at an angle (mitres, junctions
     False), creases by construction, as where OCCT's fillets meet there; or where two
-    runs of one chain meet (junctions True), G1 as the side faces are there. Reported,
+    runs of one chain meet (junctions True), G1 as the side faces are there, with the
+    jump of a side face's own curvature there (knots.side_jump, relative:
+    side_curvature_jump), which no blend can follow. Reported,
     not counted in the verdict, which is about the trimlines, except a junction whose
     blends meet at a crease (normals more than check.TOL_G1 apart; solve_runs accepts
     up to JUNCTION_TURN). faces: [(Blended, its face in solid)]; scales:
@@ -1155,6 +1162,10 @@ def _shared_edge_checks(solid, faces, junctions, scales):
                     r["faces"] = [ck.element_name(solid, f, "Face"),
                                   ck.element_name(solid, g, "Face")]
                     r["blends"] = [b.where, o.where]
+                    if junctions:
+                        r["side_curvature_jump"] = side_jump(
+                            [v.Point for v in e.Vertexes],
+                            list(b.chain.sides) + list(o.chain.sides))
                     out.append(r)
     return out
 
