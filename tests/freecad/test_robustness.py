@@ -33,6 +33,7 @@ def doc(request):
     b = Part.makeBox(10, 10, 10)
     d.addObject("Part::Feature", "Rounded").Shape = b.makeFillet(2.0, [b.Edges[0]])
     d.addObject("Part::Feature", "Inverted").Shape = b.reversed()
+    d.addObject("Part::Feature", "ClosedShell").Shape = Part.Shell(Part.makeBox(10, 10, 10).Faces)
     d.recompute()
     yield d
     FreeCAD.closeDocument(d.Name)
@@ -71,9 +72,14 @@ BAD_FILLETS = [
      r"Box: shape_params: shape parameters must be finite"),
     ("Box", ["Edge1", "Edge2", "Edge3"], 6.0, {}, r"Box\.Edge1, Box\.Edge2, Box\.Edge3: "),
     ("Pair", ["Edge1"], 2.0, {}, r"Pair: the shape is a Compound with 2 solid\(s\) and 0 "
-     r"face\(s\) outside them; a fillet needs one closed solid"),
+     r"face\(s\) outside them; a fillet needs one closed solid; fillet each solid on its own "
+     r"\(Part > Compound > Explode compound"),
     ("OpenBox", ["Edge1"], 2.0, {}, r"OpenBox: the shape is a Shell with 0 solid\(s\) and 5 "
-     r"face\(s\) outside them"),
+     r"face\(s\) outside them; a fillet needs one closed solid; faces with free edges bound no "
+     r"volume: close the shell first"),
+    ("ClosedShell", ["Edge1"], 2.0, {}, r"ClosedShell: the shape is a Shell with 0 solid\(s\) "
+     r"and 6 face\(s\) outside them; a fillet needs one closed solid; its faces close up: make "
+     r"them a solid first \(Part > Convert to solid"),
     ("Rounded", [lambda s: next(  # where OCCT's fillet meets a face, tangentially
         "Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Line)
         and any(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face)))],
@@ -277,7 +283,7 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
             break
         doc.undo()
     assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet", "Pair", "OpenBox",
-                                             "Rounded", "Inverted"]
+                                             "Rounded", "Inverted", "ClosedShell"]
     doc.redo()
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()

@@ -145,11 +145,23 @@ def check_solid(shape, label):
     """Raise C2BlendError naming `label` unless shape is one closed solid, not inside out."""
     solids = [] if shape.isNull() else shape.Solids
     if len(solids) != 1 or len(shape.Faces) != len(solids[0].Faces):
+        loose = len(shape.Faces) - sum(len(s.Faces) for s in solids)
+        if len(solids) > 1 and not loose:
+            advice = ("; fillet each solid on its own (Part > Compound > Explode compound "
+                      "gives them; Part > Boolean > Union makes one solid of touching ones)")
+        elif not solids and loose and all(s.isClosed() for s in shape.Shells) and \
+                len(shape.Shells) == 1 and len(shape.Shells[0].Faces) == loose:
+            advice = ("; its faces close up: make them a solid first (Part > Convert to "
+                      "solid, or Part.Solid(shell) in a macro)")
+        elif loose:
+            advice = ("; faces with free edges bound no volume: close the shell first "
+                      "(Part > Shape builder)")
+        else:
+            advice = ""
         raise C2BlendError("the shape is a %s with %d solid(s) and %d face(s) outside "
-                           "them; a fillet needs one closed solid"
+                           "them; a fillet needs one closed solid%s"
                            % ("null shape" if shape.isNull() else shape.ShapeType,
-                              len(solids), len(shape.Faces) - sum(len(s.Faces) for s in solids)),
-                           label)
+                              len(solids), loose, advice), label)
     if solids[0].Volume < 0:
         raise C2BlendError("the solid is inside out: its faces point inwards (volume %.6g); "
                            "reverse it first (shape.reversed())" % solids[0].Volume, label)
