@@ -527,6 +527,19 @@ def periodic_loft(n=24):
                    and abs(e.BoundBox.XMax) < 7)
 
 
+def equal_tee():
+    """A pipe r = 6 standing on the axis of another r = 6 (axis y, 30 long): the junction
+    is two half-ellipses, split into 4 edges, that meet at (-6, 0, 0) and (6, 0, 0), where
+    the two cylinders have the same normal (along x). Returns (solid, names of the 4
+    junction edges)."""
+    big = Part.makeCylinder(6, 30, V(0, -15, 0), V(0, 1, 0))
+    s = big.fuse(Part.makeCylinder(6, 12)).removeSplitter()
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if len(s.ancestorsOfType(e, Part.Face)) == 2 and e.BoundBox.ZMin > -1e-9
+               and 1 < e.BoundBox.ZMax < 6 + 1e-6
+               and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
+
+
 def wavy_top_block():
     """A 40 x 30 x 20 block whose top is cut by a cubic B-spline surface interpolated
     over a 5 mm grid from x = -5 to 45, z = 15 + 2 sin(x / 6): its knot lines run every

@@ -2395,6 +2395,30 @@ def test_a_crease_too_large_at_a_seam_only_g1_keeps_occts_face_and_says_why():
     assert abs(float(m.group(1)) - abs(ka - kb) / max(ka, kb)) < 0.15 * abs(ka - kb) / max(ka, kb)
 
 
+def test_junction_of_equal_pipes_keeps_occts_faces_and_names_where_they_touch():
+    """Equal pipes (r = 6) in a tee: their faces become tangent at (+-6, 0, 0), where the
+    junction's edges meet and the rolling ball's fillet shrinks to a point. OCCT's faces
+    there do not chain up, and were kept with only "the rolling-ball faces do not form
+    one chain". The reason now names the edges' ends where the faces touch, at the two
+    points where both cylinders' normals are along x. The solid is then OCCT's own, which
+    passes BRepCheck but not the BOP check (a face of OCCT's fillet intersects itself),
+    and the report says so."""
+    s, names = shapes.equal_tee()
+    assert len(names) == 4
+    solid, rep = fl.fillet(s, names, 1.0, label="Tee")
+    assert solid.isValid() and solid.Volume > 0
+    assert rep["solid_check"].startswith("OCCT's rolling-ball solid, unchanged")
+    assert "SelfIntersect" in rep["solid_check"]
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 2
+    for k in rep["kept_occt_faces"]:
+        points = re.findall(r"Tee\.Edge\d+ at \(([^)]*)\)", k["reason"])
+        assert len(points) == 2, k["reason"]
+        xyz = sorted(tuple(float(c) for c in p.split(",")) for p in points)
+        for (x, y, z), ex in zip(xyz, (-6.0, 6.0)):
+            assert abs(x - ex) < 1e-3 and abs(y) < 1e-3 and abs(z) < 1e-3
+        assert "the rolling ball's fillet shrinks to a point" in k["reason"]
+
+
 def _normal_jump(shape, edge, n=41):
     """The largest angle (rad) between the normals of the two faces of `shape` along
     `edge`, at n points, each face's normal taken at the point's projection on its

@@ -1099,15 +1099,35 @@ def _input_problems(shape):
         return None
 
 
-def _where(label, names, chains_):
-    """{id(chain): names of the selected edges it fillets}, for messages: each edge goes
-    to the chain whose faces are nearest to the edge's midpoint."""
+def _selected(names, chains_):
+    """{id(chain): [(name, edge)] of the selected edges it fillets}: each edge goes to
+    the chain whose faces are nearest to the edge's midpoint."""
     out = {}
     for n, e in names:
         mid = Part.Vertex(midpoint(e))
         c = min(chains_, key=lambda c: min(f.distToShape(mid)[0] for f in c.faces))
-        out.setdefault(id(c), []).append("%s.%s" % (label, n))
-    return {k: ", ".join(v) for k, v in out.items()}
+        out.setdefault(id(c), []).append((n, e))
+    return out
+
+
+def _tangent_ends(shape, label, edges):
+    """'; ...' naming each end of `edges` [(name, edge)] of shape where its two faces
+    become tangent (normals within TANGENT_ANGLE), as where two equal cylinders meet in a
+    tee: the rolling ball's fillet shrinks to a point there, which OCCT's faces follow
+    and which tells why they do not chain up; '' where none does."""
+    out = []
+    for n, e in edges:
+        faces = ck.edge_faces(shape, e)
+        if len(faces) != 2:
+            continue
+        for v in e.Vertexes:
+            a = angle(frame_at_point(faces[0], v.Point).n, frame_at_point(faces[1], v.Point).n)
+            if a < TANGENT_ANGLE or math.pi - a < TANGENT_ANGLE:
+                out.append("%s.%s at (%.4g, %.4g, %.4g)" % ((label, n) + tuple(v.Point)))
+    if not out:
+        return ""
+    return ("; the two faces become tangent at %s, where the rolling ball's fillet shrinks "
+            "to a point: a blend needs two trimlines apart" % ", ".join(out))
 
 
 def _measure(solid, blended, corners):
@@ -1279,11 +1299,14 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     blended, kept = [], []
     all_chains, patches = chains([RollingBallFace(result, f, fillet_faces)
                                   for f in fillet_faces])
-    wheres = _where(label, names, all_chains)
+    selected = _selected(names, all_chains)
     for chain in all_chains:
-        where = wheres.get(id(chain)) or _occt_face_at(label, chain.faces[0])
+        edges = selected.get(id(chain), [])
+        where = ", ".join("%s.%s" % (label, n) for n, _ in edges) or \
+            _occt_face_at(label, chain.faces[0])
         if chain.corner:
-            kept.append({"where": where, "reason": chain.corner})
+            kept.append({"where": where,
+                         "reason": chain.corner + _tangent_ends(shape, label, edges)})
             continue
         try:
             new = solve_chain(chain, radius, where, continuity, shape_params, tension,
