@@ -540,6 +540,19 @@ def equal_tee():
                and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
 
 
+def nurbs_sphere_through_plate(turn):
+    """A sphere r = 5 centred at (0, 0, 7), converted by toNurbs() (a rational B-spline,
+    only C0 at its knots: the BOP check flags it) and turned by `turn` degrees about the
+    z axis, fused through a 40 x 40 x 5 plate. Returns (solid, name of the junction
+    circle at z = 5)."""
+    sphere = Part.Solid(Part.Shell(Part.makeSphere(5, V(0, 0, 7)).Faces[0].toNurbs().Faces))
+    sphere.rotate(V(0, 0, 7), V(0, 0, 1), turn)
+    s = Part.makeBox(40, 40, 5, V(-20, -20, 0)).fuse(sphere).removeSplitter()
+    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                   if abs(e.BoundBox.ZMin - 5) < 1e-6 and abs(e.BoundBox.ZMax - 5) < 1e-6
+                   and 5 < e.BoundBox.XLength < 12)
+
+
 def wavy_top_block():
     """A 40 x 30 x 20 block whose top is cut by a cubic B-spline surface interpolated
     over a 5 mm grid from x = -5 to 45, z = 15 + 2 sin(x / 6): its knot lines run every

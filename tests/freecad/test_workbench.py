@@ -1459,6 +1459,30 @@ def test_an_input_whose_faces_are_c0(convert):
     assert "as in the input solid" in rep["solid_check"]
 
 
+def test_new_faults_on_a_c0_input_keep_occts_face():
+    """A sphere converted by toNurbs() through a plate, turned 45 degrees: the input fails
+    the BOP check for C0 geometry only. The blend of the junction (R = 1) makes the BOP
+    check also find a self-intersection, which the input does not have. That used to
+    raise "the input solid already fails that check ... repair or rebuild it first",
+    though C0 inputs are filleted (test above). The new finding is now looked for
+    around the blend, and the blend is kept as OCCT's with the finding in its reason.
+    The solid is then OCCT's own, in which the BOP check finds a self-intersection too,
+    and the report gives the input's findings apart (it said "and so does the input
+    solid")."""
+    s, edge = shapes.nurbs_sphere_through_plate(45.0)
+    orig = fl.bc.problems(s)
+    assert orig and fl._only_c0(orig)
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Ball")
+    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
+    reason = rep["kept_occt_faces"][0]["reason"]
+    assert reason.startswith("OCCT's BOP check of the solid sewn with its blend finds, "
+                             "around it:") and "SelfIntersect" in reason
+    line = rep["solid_check"]
+    assert line.startswith("OCCT's rolling-ball solid, unchanged")
+    assert line.endswith(" (in the input solid: %s); Boolean operations on it may fail" % orig)
+
+
 def test_runs_end_where_the_contact_crosses_the_face_change():
     """The slot plate converted by toNurbs(): OCCT's fillet of the slot's rim on the
     B-spline walls splits its faces 1e-2 away from where the wall changes from plane to
@@ -2226,20 +2250,47 @@ def test_arc_length_near_clustered_guide_knots():
     assert len(rep["blends"]) == 8 and not rep["kept_occt_faces"]
 
 
-def test_boss_on_a_seam_is_kept():
-    """A boss whose junction with a lofted face straddles that face's seam. OCCT's
-    general fuse loses the face when it is cut along the blend's closed trimline, so the
-    fillet is kept as OCCT's, with that reason, and the solid is valid (it was a sewing
-    error). The same boss 45 degrees off the seam is G2."""
+def test_boss_on_a_seam_is_g2():
+    """A boss whose junction with a lofted face straddles that face's seam, the
+    junction's vertex on it. OCCT's general fuse lost all but 8.5 of the face's
+    1235 mm2 when it was cut along the blend's closed trimline, whose vertex lies there,
+    so the fillet was kept as OCCT's. The cut is now made again with the trimline
+    started half a period on (fl._restarted): the fillet is G2, the solid passes the BOP
+    check, and its trimline on the boss lies on the boss's cylinder (3 from its axis,
+    the x axis at z = 10, within 1e-6). The same boss 45 degrees off the seam, and the
+    first cut's failure as such (the retry disabled), are checked too."""
     s, edges = shapes.loft_with_boss(0.0)
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
     assert_valid(solid)
-    assert not rep["blends"] and rep["verdict"] == "G1"
-    assert "seam" in rep["kept_occt_faces"][0]["reason"]
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    boss = [t for t in rep["trimlines"]
+            if any(isinstance(f.Surface, Part.Cylinder) for f in
+                   solid.ancestorsOfType(solid.getElement(t["edge"]), Part.Face))]
+    assert len(boss) == 1
+    e = solid.getElement(boss[0]["edge"])
+    for t in ck.sample_params(e, 41):
+        p = e.valueAt(t)
+        assert abs(math.hypot(p.y, p.z - 10) - 3) < 1e-6
     s, edges = shapes.loft_with_boss(45.0)
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
     assert_valid(solid)
     assert_g2(rep)
+
+
+def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
+    """Without the restarted trimline (fl._restarted returning the edge as it is), the
+    boss on the seam is kept as OCCT's, the reason names the lost area, and the solid
+    is valid."""
+    monkeypatch.setattr(fl, "_restarted", lambda edge: edge)
+    s, edges = shapes.loft_with_boss(0.0)
+    solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    reason = rep["kept_occt_faces"][0]["reason"]
+    assert re.search(r"general fuse lost part of the face \([0-9.]+ of 1234\.\d+\)", reason), \
+        reason
 
 
 def test_tessellation_takes_the_nodes_parameters():

@@ -79,10 +79,15 @@ def problems(shape, seconds=None, bop=True, meanwhile=None, suspects=()):
         found = _check_here(shape, False)
     if found is None:
         return None
-    lines = [line.strip() for line in found.splitlines() if line.strip()]
-    lines = lines[1:] if len(lines) > 1 and lines[0].endswith(":") else lines
+    lines = _findings(found)
     return "; ".join("%s (%d)" % (f, lines.count(f)) if lines.count(f) > 1 else f
                      for f in dict.fromkeys(lines))
+
+
+def _findings(found):
+    """The lines of OCCT's findings (the text of a failed check), without its heading."""
+    lines = [line.strip() for line in found.splitlines() if line.strip()]
+    return lines[1:] if len(lines) > 1 and lines[0].endswith(":") else lines
 
 
 def _watched(shape, seconds, meanwhile, suspects):
@@ -160,14 +165,17 @@ def _watched(shape, seconds, meanwhile, suspects):
     raise Unfinished("OCCT's BOP check did not finish within %.0f s" % seconds, stuck)
 
 
-def faulty(shape, faces, seconds):
+def faulty(shape, faces, seconds, ignore=None):
     """Those of `faces` (faces of `shape`) in whose neighbourhood the BOP check finds
     something wrong (or does not finish within `seconds`): where the findings on the
-    whole shape are."""
+    whole shape are. Findings containing `ignore` (a string, such as 'GeomAbs_C0')
+    do not count."""
     out = []
     for f in faces:
         try:
-            if _checked(_neighbourhood(shape, f), seconds) is not None:
+            found = _checked(_neighbourhood(shape, f), seconds)
+            if found is not None and any(ignore is None or ignore not in x
+                                         for x in _findings(found)):
                 out.append(f)
         except Unfinished:
             out.append(f)

@@ -623,11 +623,13 @@ def _cut_face(face, tools, sharp, legs, tol):
     leg until it grows, _grown)."""
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
-    pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
-    if abs(sum(f.Area for f in pieces) - face.Area) > 1e-3 * face.Area:  # areas: ~1e-6
-        raise ValueError("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
-                         "trimline crosses the face's seam" % (sum(f.Area for f in pieces),
-                                                                face.Area))
+    pieces = _fused(face, tools, tol)
+    if isinstance(pieces, float):
+        again = _fused(face, [_restarted(e) for e in tools], tol)
+        if isinstance(again, float):
+            raise ValueError("OCCT's general fuse lost part of the face (%.6g of %.6g), as "
+                             "where a trimline crosses the face's seam" % (pieces, face.Area))
+        pieces = again
 
     def touches(piece, edge):
         if piece.distToShape(edge)[0] > tol:
@@ -637,6 +639,37 @@ def _cut_face(face, tools, sharp, legs, tol):
                    for p in _edge_points(edge, (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)))
 
     return [f for f in pieces if not any(touches(f, e) for e in sharp)]
+
+
+def _fused(face, tools, tol):
+    """The pieces of face cut along the edges `tools` by OCCT's general fuse (fuzzy value
+    tol), or their total area when they do not make up the face (areas agree to about
+    1e-6; 1e-3 is allowed): the fuse lost part of it."""
+    pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
+    area = sum(f.Area for f in pieces)
+    return area if abs(area - face.Area) > 1e-3 * face.Area else pieces
+
+
+def _restarted(edge):
+    """A closed edge on a periodic (or periodisable) curve, as a new edge on the same
+    curve starting half a period on; any other edge as it is. OCCT's general fuse loses
+    most of a face cut along a closed trimline whose vertex lies at (or 2.6e-7 from) the
+    face's seam, keeping only 8.5 of 1235 mm2 of a lofted face with a boss on its seam:
+    the cut then merges the vertex with the seam's crossing. Started away from the seam,
+    the trimline crosses it as any edge does, and the pieces sew to the blend's own
+    edge, whose vertex is left where it is."""
+    if not edge.isClosed():
+        return edge
+    c = edge.Curve.copy()
+    a, b = edge.ParameterRange
+    if not c.isPeriodic():
+        try:
+            c.setPeriodic()
+        except (AttributeError, RuntimeError, ValueError):  # not a closed B-spline
+            return edge
+        a, b = c.FirstParameter, c.LastParameter
+    h = 0.5 * (b - a)
+    return c.toShape(a + h, b + h)
 
 
 def _samples(a, b, curves, per_span=8, n=100):
@@ -873,6 +906,10 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     inherited = _inherited(problems, orig, solid) if problems else None
     if inherited:
         problems, line = None, inherited
+    # an input that fails the BOP check for C0 geometry only does not stop the faults
+    # that are new being looked for around the blends: they are the fillet's
+    c0_input = orig is not None and _only_c0(orig)
+    blocks = orig if not c0_input else None
     rejected = _rejected_faces(solid, blended, fills) if problems else []
     if rejected:
         # FreeCAD's message then lists its faces' own statuses ("No error"), not those
@@ -883,13 +920,13 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         own = [near for name, near in rejected if not name.startswith("face ")]
         at = [b for b in blended if any(b is x for near in own or [n for _, n in rejected]
                                         for x in near)]
-        if at and not orig:
+        if at and not blocks:
             raise Unassembled(at, "the solid sewn with its blend is not valid: %s"
                               % problems)
-    elif problems and bop and not orig:
+    elif problems and bop and not blocks:
         # BRepCheck passes: the BOP check's findings (which name no face) are looked
-        # for around each blend and filling
-        at = _bop_faulty(solid, blended, fills)
+        # for around each blend and filling, but for the C0 faces of a C0 input
+        at = _bop_faulty(solid, blended, fills, C0_FINDING if c0_input else None)
         if at:
             raise Unassembled(at, "OCCT's BOP check of the solid sewn with its blend "
                               "finds, around it: %s" % problems)
@@ -928,13 +965,13 @@ def _rejected_faces(solid, blended, fills):
     return out
 
 
-def _bop_faulty(solid, blended, fills):
+def _bop_faulty(solid, blended, fills, ignore=None):
     """The blends of `blended` in whose neighbourhood in `solid` (the blend face, or
     the plate filling at its corner, with the faces next to it) OCCT's BOP check finds
-    something wrong (bopcheck.faulty)."""
+    something wrong (bopcheck.faulty), but for findings that contain `ignore`."""
     faces = [_find_face(solid, b) for b in blended]
     fill_faces = [_patch_face(solid, f.patch) for f in fills]
-    bad = bc.faulty(solid, faces + fill_faces, bc.NEAR_LIMIT)
+    bad = bc.faulty(solid, faces + fill_faces, bc.NEAR_LIMIT, ignore)
     at = [b for b, g in zip(blended, faces) if any(g.isSame(x) for x in bad)]
     for f, g in zip(fills, fill_faces):
         if any(g.isSame(x) for x in bad):
@@ -948,14 +985,19 @@ def _inherited(problems, orig, solid):
     too (`orig`, its findings: B-spline faces with knots of full multiplicity, as after
     toNurbs()) and BRepCheck passes: those are the input's faces, cut anew but the
     same surfaces, not a defect of the fillet. None otherwise."""
-    kinds = {f.rsplit(" (", 1)[0] for f in problems.split("; ")}
-    if not all(k.endswith(C0_FINDING) for k in kinds):
+    if not _only_c0(problems):
         return None
     if not orig or C0_FINDING not in orig or bc.problems(solid, bop=False):
         return None
     return ("passes BRepCheck; the BOP check finds geometry that is only C0 (%s), as in "
             "the input solid (%s): Boolean operations on those faces may fail"
             % (problems, orig))
+
+
+def _only_c0(findings):
+    """True when every finding of a problems line (bopcheck.problems) is on geometry
+    that is only C0."""
+    return all(f.rsplit(" (", 1)[0].endswith(C0_FINDING) for f in findings.split("; "))
 
 
 class _Fill:
@@ -1084,10 +1126,10 @@ def _occt_result_check(shape, result, bop=True):
                 % ex)
     if problems is None:
         return "OCCT's rolling-ball solid, unchanged: passes BRepCheck and the BOP check"
+    orig = _input_problems(shape)
     return ("OCCT's rolling-ball solid, unchanged (FreeCAD's Fillet gives the same): it "
             "passes isValid(), but the BOP check finds: %s%s; Boolean operations on it "
-            "may fail" % (problems, "" if _input_problems(shape) is None
-                          else ", and so does the input solid"))
+            "may fail" % (problems, "" if orig is None else " (in the input solid: %s)" % orig))
 
 
 def _input_problems(shape):
