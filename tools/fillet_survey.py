@@ -112,6 +112,21 @@ def parts():
     out.append(("rounded box, top outline (side changes face)", rx, edges, 1.0))
     so, edges = shapes.slot_plate()
     out.append(("slot in a plate, its rim (side changes face)", so, edges, 1.0))
+    for n in (24, 12):
+        pl, edge = shapes.periodic_loft(n)
+        out.append(("loft through %d-point periodic circles, on a plate (only G1 at its seam)"
+                    % n, pl, [edge], 1.0))
+    bs, edges = shapes.loft_with_boss(0.0)
+    out.append(("boss on a loft, on its seam", bs, edges, 1.0))
+    et, edges = shapes.equal_tee()
+    out.append(("equal pipes r = 6 in a tee (faces tangent at 2 points)", et, edges, 1.0))
+    ns, edge = shapes.nurbs_sphere_through_plate(45.0)
+    out.append(("toNurbs() sphere through a plate, turned 45 degrees", ns, [edge], 1.0))
+    cl = shapes.crossing_lofts()
+    out.append(("two crossing lofts of ellipses (B-spline / B-spline)", cl,
+                names(cl, lambda e: len(cl.ancestorsOfType(e, Part.Face)) == 2 and all(
+                    isinstance(f.Surface, Part.BSplineSurface)
+                    for f in cl.ancestorsOfType(e, Part.Face))), 0.25))
     return out
 
 
@@ -160,7 +175,8 @@ def all_edge_parts():
            ("box 20 x 20 x 10 with a hole", Part.makeBox(20, 20, 10).cut(
                Part.makeCylinder(3, 10, V(10, 10, 0))), 1.0),
            ("box 20 x 20 x 10 (a BOP check loop at one corner)", Part.makeBox(20, 20, 10),
-            0.5)]
+            0.5),
+           ("box 20 x 20 x 10, shelled 1.5 thick, open at its top", shapes.open_box(), 0.5)]
     for name, make, radii in (("spline prism", shapes.spline_prism, (1.0,)),
                               ("spline extrusion", shapes.spline_extrusion, (1.0,)),
                               ("wavy B-spline top block", shapes.wavy_top_block, (1.0,)),

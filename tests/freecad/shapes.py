@@ -553,6 +553,26 @@ def nurbs_sphere_through_plate(turn):
                    and 5 < e.BoundBox.XLength < 12)
 
 
+def crossing_lofts():
+    """A loft through 6 x 4, 5 x 3.5 and 6 x 4 ellipses at z = 0, 6 and 12, and one
+    through ellipses of 0.4 that size from z = -4 to 16, turned to lie along y through
+    (0, 0, 6): their junction runs between two B-spline faces."""
+    def loft(k, z0, z1):
+        return Part.makeLoft([Part.Wire(Part.Ellipse(V(0, 0, z), a * k, b * k).toShape())
+                              for z, (a, b) in ((z0, (6, 4)), (0.5 * (z0 + z1), (5, 3.5)),
+                                                (z1, (6, 4)))], True, False)
+    cross = loft(0.4, -4, 16)
+    cross.rotate(V(0, 0, 6), V(1, 0, 0), 90)
+    return loft(1.0, 0, 12).fuse(cross).removeSplitter()
+
+
+def open_box():
+    """A 20 x 20 x 10 box shelled 1.5 thick (makeThickness), open at its top."""
+    b = Part.makeBox(20, 20, 10)
+    return b.makeThickness([f for f in b.Faces if abs(f.CenterOfMass.z - 10) < 1e-9], -1.5,
+                           1e-6)
+
+
 def wavy_top_block():
     """A 40 x 30 x 20 block whose top is cut by a cubic B-spline surface interpolated
     over a 5 mm grid from x = -5 to 45, z = 15 + 2 sin(x / 6): its knot lines run every
