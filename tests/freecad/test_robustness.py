@@ -183,6 +183,15 @@ SCRIPT_MISUSE = [
      r"^blend: a list of Part\.Face objects is needed .*, got an empty list$"),
     (lambda C, b, f, e: C.blend_solid(b.Edges),
      r"^blend: a list of Part\.Face objects is needed .*, got a list of Edge$"),
+    # an edge of a copy, or of an equal shape built again, lies where one of b's does
+    (lambda C, b, f, e: C.fillet(b, [b.copy().Edges[2]], 2, label="Box"),
+     r"^Box: the edge does not belong to the shape \(it lies where Edge3 of the shape "
+     r"does: pass that shape's own edge, or its name 'Edge3'"),
+    (lambda C, b, f, e: C.check(b, [Part.makeBox(10, 10, 10).Edges[5]], label="Box"),
+     r"^Box: the edge does not belong to the shape \(it lies where Edge6 "),
+    (lambda C, b, f, e: C.fillet(b, [b.translated(FreeCAD.Vector(1, 0, 0)).Edges[0]], 2,
+                                 label="Box"),
+     r"^Box: the edge does not belong to the shape$"),
 ]
 
 

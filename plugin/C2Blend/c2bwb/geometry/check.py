@@ -80,7 +80,8 @@ def named_edges(shape, edges, label, purpose):
                                % (kind, purpose), label)
         name = element_name(shape, e, "Edge")
         if name == "?":
-            raise C2BlendError("the edge does not belong to the shape", label)
+            raise C2BlendError("the edge does not belong to the shape%s"
+                               % _lying_where(shape, e), label)
         out.append((name, e))
     if not out:
         raise C2BlendError("no edges given", label)
@@ -199,6 +200,24 @@ def check_edge(shape, edge, samples=101, diagonal=None, scales=None):
     points = [(edge.valueAt(t), edge.tangentAt(t), None) for t in sample_params(edge, samples)]
     return compare(faces[0], faces[1], points, diagonal or shape.BoundBox.DiagonalLength,
                    max(TOL_G0, edge.Tolerance), scales=scales)
+
+
+def _lying_where(shape, edge):
+    """' (it lies where EdgeN of the shape does: ...)' when an edge of shape has the same
+    ends and midpoint as `edge` (to 1e-9 of its length), as an edge of shape.copy() or of
+    an equal shape built again; '' otherwise."""
+    def points(e):
+        a, b = e.ParameterRange
+        return [e.valueAt(t) for t in (a, 0.5 * (a + b), b)]
+    mine, tol = points(edge), 1e-9 * max(edge.Length, 1e-9)
+    for i, f in enumerate(shape.Edges):
+        theirs = points(f)
+        if any(all((p - q).Length <= tol for p, q in zip(mine, order))
+               for order in (theirs, theirs[::-1])):
+            return (" (it lies where Edge%d of the shape does: pass that shape's own edge, "
+                    "or its name 'Edge%d'; an edge of shape.copy() or of another shape is "
+                    "not the same edge)" % (i + 1, i + 1))
+    return ""
 
 
 def element_name(shape, sub, kind):
