@@ -53,7 +53,7 @@ try:
     from c2bwb.objects import animate
     clock = make.make_clock(doc)
     pad.setExpression("Length", "%s.Time * 4 mm + 8 mm" % clock.Name)
-    folder = tempfile.mkdtemp()
+    folder = tempfile.mkdtemp(dir=os.path.dirname(out))  # removed with the run's folder
     frames = animate.animate(doc, clock, [0.0, 0.5, 1.0], fillets, folder, "brep")
     for frame in frames:
         assert set(frame["verdicts"].values()) == {"G2"}, frame
