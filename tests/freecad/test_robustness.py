@@ -245,6 +245,28 @@ def test_document_objects_store_the_edges_names(doc):
     assert c.Target[1] == ["Edge3"] and c.Verdict
 
 
+def test_a_seam_among_the_edges_is_left_out_and_reported(doc):
+    """The shaft's junction selected with the shaft's seam (as a box selection of the
+    whole part picks it): the seam is left out, as OCCT's fillet leaves it out, instead
+    of refusing the fillet. The object keeps the whole selection, and its report lists
+    the seam ("left out of the fillet" in the Report view's lines). The seam alone is
+    still refused (the bad-input table above)."""
+    import json
+    import C2Blend
+    sp = doc.getObject("ShaftPlate")
+    s = sp.Shape
+    seam = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                if any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))
+    junction = shapes.shaft_on_plate()[1]
+    f = make.make_fillet(sp, [junction, seam], 2.0)
+    assert f.Base[1] == [junction, seam] and f.Verdict == "G2"
+    rep = json.loads(f.Report)
+    assert [k["where"] for k in rep["skipped_edges"]] == ["ShaftPlate.%s" % seam]
+    assert "seam of Face" in rep["skipped_edges"][0]["reason"]
+    assert "ShaftPlate.%s: left out of the fillet: the edge is the seam" % seam in \
+        C2Blend.format_report(rep)
+
+
 @pytest.mark.parametrize("continuity,given,same", [
     ("C1", (0.1, 1.5, 0.5), (0.1, 1.5, 0.5)),
     ("C3", (0.1, 2.0, 2.0, 2.0, 2.0), (0.05, 1.0, 1.0, 1.0, 1.0))])

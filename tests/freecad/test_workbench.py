@@ -2250,6 +2250,28 @@ def test_arc_length_near_clustered_guide_knots():
     assert len(rep["blends"]) == 8 and not rep["kept_occt_faces"]
 
 
+def test_edges_between_tangent_faces_in_a_selection_are_left_out():
+    """The rounded box's top outline selected with its 8 vertical edges, where the box's
+    planes meet its rounded corners tangentially (as when every edge of a part is
+    selected). OCCT's fillet takes that selection and leaves those edges out; C2 Fillet
+    refused it ("the faces meet tangentially along the edge"). It now leaves them out
+    too and lists each in the report: the solid is the outline's own fillet (same
+    volume to 1e-9), G2."""
+    s, names = shapes.rounded_box()
+    tangent = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if isinstance(e.Curve, Part.Line) and e.BoundBox.ZLength > 9]
+    assert len(tangent) == 8
+    s.makeFillet(1.0, [s.getElement(n) for n in names + tangent])  # OCCT takes it
+    solid, rep = C2Blend.fillet_report(s, names + tangent, 1.0, label="Box")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert sorted(k["where"] for k in rep["skipped_edges"]) == sorted(
+        "Box." + n for n in tangent)
+    assert all("meet tangentially" in k["reason"] for k in rep["skipped_edges"])
+    alone = C2Blend.fillet(s, names, 1.0)
+    assert abs(solid.Volume - alone.Volume) < 1e-9 * alone.Volume
+
+
 def test_boss_on_a_seam_is_g2():
     """A boss whose junction with a lofted face straddles that face's seam, the
     junction's vertex on it. OCCT's general fuse lost all but 8.5 of the face's

@@ -304,6 +304,8 @@ def format_report(rep):
                      "the blends' ends within tolerance (never G2; in the verdict): %s, edges "
                      "%.2e apart, normals %.2e rad apart"
                      % (r["where"], r["face"], r["verdict"], r["g0"], r["g1"]))
+    for k in rep.get("skipped_edges", []):
+        lines.append("%s: left out of the fillet: %s" % (k["where"], k["reason"]))
     for k in rep.get("kept_occt_faces", []):
         lines.append("%s: kept OCCT's rolling-ball face (G1 only, no G2 claim): %s"
                      % (k["where"], k["reason"]))

@@ -86,30 +86,41 @@ class Unassembled(Exception):
         self.blends = blends
 
 
-def resolve_edges(shape, edges, label):
+def resolve_edges(shape, edges, label, skipped=None):
     """[(name, Part.Edge)] from Part.Edge objects, 'EdgeN' names or 1-based indices, each
     between two faces that meet at an angle. Raises C2BlendError naming the offending
-    element."""
-    out = ck.named_edges(shape, edges, label, "fillet")
-    for name, edge in out:
+    element. With a list `skipped`, a seam or an edge between faces that meet
+    tangentially (no corner to fillet, as OCCT's fillet ignores in a larger selection,
+    such as every edge of a part with a slot) is left out instead, appended to it as
+    {"where": "Label.EdgeN", "reason"}, unless every edge is such: then the first one's
+    error is raised."""
+    out, smooth = [], []
+    for name, edge in ck.named_edges(shape, edges, label, "fillet"):
+        where = "%s.%s" % (label, name)
         faces = ck.edge_faces(shape, edge)
         if len(faces) == 1 and edge.isSeam(faces[0]):
-            raise C2BlendError("the edge is the seam of %s, where that closed face joins "
-                               "itself smoothly: there is no corner to fillet; leave it out "
-                               "of the selection" % ck.element_name(shape, faces[0], "Face"),
-                               "%s.%s" % (label, name))
+            smooth.append({"where": where, "reason": (
+                "the edge is the seam of %s, where that closed face joins itself smoothly: "
+                "there is no corner to fillet; leave it out of the selection"
+                % ck.element_name(shape, faces[0], "Face"))})
+            continue
         if len(faces) != 2:
             raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2 "
                                "(the shape is a %s with %d solid(s); a fillet needs one "
                                "closed solid)"
                                % (len(faces), "" if len(faces) == 1 else "s", shape.ShapeType,
-                                  len(shape.Solids)),
-                               "%s.%s" % (label, name))
+                                  len(shape.Solids)), where)
         a = _normals_angle(faces, edge)
         if a < TANGENT_ANGLE:
-            raise C2BlendError("the faces meet tangentially along the edge (their normals "
-                               "differ by %.1e rad): there is no corner to fillet" % a,
-                               "%s.%s" % (label, name))
+            smooth.append({"where": where, "reason": (
+                "the faces meet tangentially along the edge (their normals differ by %.1e "
+                "rad): there is no corner to fillet" % a)})
+            continue
+        out.append((name, edge))
+    if smooth and (skipped is None or not out):
+        raise C2BlendError(smooth[0]["reason"], smooth[0]["where"])
+    if skipped is not None:
+        skipped += smooth
     return out
 
 
@@ -129,7 +140,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
     (relative) apart: a fillet has one radius."""
     setback = positive_number(setback, "setback", label, "radius")
     radii = []
-    for name, edge in resolve_edges(shape, edges, label):
+    for name, edge in resolve_edges(shape, edges, label, []):
         alpha = _normals_angle(ck.edge_faces(shape, edge), edge)
         radii.append((setback / math.tan(0.5 * alpha), "%s.%s" % (label, name)))
     lo, hi = min(radii), max(radii)
@@ -1313,12 +1324,15 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     bop: run OCCT's BOP check on the result (False for a preview: it is half the time
     of a many-edge fillet, and can take its 30 s limit; BRepCheck still runs).
     Returns (Part.Solid, report dict). Raises C2BlendError naming `label` and the edge.
+    Seams and edges between tangent faces among other edges are left out, as OCCT's
+    fillet does, and listed in the report's "skipped_edges" with the reason.
     The input shape is not modified.
     """
     t0 = time.perf_counter()
     radius, shape_params, tension = check_params(radius, continuity, shape_params, tension,
                                                  label)
-    names = resolve_edges(shape, edges, label)
+    skipped = []  # seams and edges between tangent faces in a larger selection
+    names = resolve_edges(shape, edges, label, skipped)
     check_solid(shape, label)
     # OCCT's fillet shares faces and edges with its input, and what follows writes to
     # some of them (a tessellation sets a face's Checked flag): work on a copy
@@ -1408,6 +1422,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                     "closed": b.chain.closed, "pointwise": b.group is not None}
                    for b in blended],
         "kept_occt_faces": kept,
+        "skipped_edges": skipped,
         "solid_check": solid_check,
         **measured["checks"],
         "volume": solid.Volume, "occt_volume": result.Volume,

@@ -65,9 +65,11 @@ def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
     objects, or one of them) of document object base. The selection and parameters are
     validated before the document is touched; any later failure aborts the
     transaction, so the document is left as it was."""
-    from ..geometry import fillet as fl
+    from ..geometry import check as ck, fillet as fl
     sp = _checked_params(radius, continuity, shape_params, tension, base.Label)
-    names = [n for n, _ in fl.resolve_edges(base.Shape, edges, base.Label)]
+    fl.resolve_edges(base.Shape, edges, base.Label, [])  # at least one edge to fillet
+    # the whole selection is kept: a recompute reports the edges it leaves out
+    names = [n for n, _ in ck.named_edges(base.Shape, edges, base.Label, "fillet")]
 
     def setup(obj):
         obj.Base = (base, names)

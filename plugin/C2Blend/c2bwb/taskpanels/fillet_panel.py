@@ -51,6 +51,8 @@ class FilletPanel(ParamsPanel):
                        for k in rep["kept_occt_faces"])
         kept += "".join("\n%s filled, normals within %.1e rad (not G2)" % (c["where"], c["g1"])
                         for c in rep["corner_patches"])
+        kept += "".join("\nLeft out %s: %s" % (k["where"], k["reason"])
+                        for k in rep["skipped_edges"])
         return solid, ("%s; radius %.6g; %d blend face(s), fit deviation %.2g, %.0f ms%s"
                        % (rep["verdict"], radius, len(rep["blends"]),
                           max([b["fit_deviation"] for b in rep["blends"]] or [0.0]),
