@@ -78,6 +78,17 @@ def loft():
     raise AssertionError("no top edge")
 
 
+def offset_loft():
+    """loft() offset outwards by 0.5 (makeOffsetShape, intersection joins): an
+    OffsetSurface side face between planes at z = -0.5 and 20.5. Returns (solid, the
+    original loft's side face, name of the bottom edge)."""
+    lo = loft()[0]
+    s = lo.makeOffsetShape(0.5, 1e-6, join=2)
+    side = next(f for f in lo.Faces if isinstance(f.Surface, Part.BSplineSurface))
+    return s, side, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                         if e.BoundBox.ZMax < -0.5 + 1e-6)
+
+
 def loft_tube():
     """Lofted solid through circles r = 3, 4, 3 at z = -15, 0, 15; returns (solid, name
     of the top edge). OCCT makes the side one polynomial patch (degree 14 around), whose

@@ -2301,6 +2301,31 @@ def test_boss_on_a_seam_is_g2():
     assert_g2(rep)
 
 
+def test_rim_of_an_offset_loft_is_g2():
+    """The bottom rim of a lofted solid offset by 0.5 (an OffsetSurface face): cutting
+    that face along the blend's closed trimline, whose vertex lies on the face's seam,
+    raised "MultiFusion failed", and OCCT's face was kept. Started half a period on
+    (fl._restarted), the trimline cuts it: G2, BRepCheck-valid, and the trimline on the
+    offset face lies 0.5 from the original loft's face (to 1e-6). The offset face is
+    only C0 for OCCT's BOP check, in the input already, and the report says so."""
+    s, side, edge = shapes.offset_loft()
+    assert any(isinstance(f.Surface, Part.OffsetSurface) for f in s.Faces)
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Offset")
+    assert not rep["kept_occt_faces"]
+    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert_g2(rep)
+    assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
+                                         "that is only C0 (")
+    assert "as in the input solid" in rep["solid_check"]
+    on_offset = [t for t in rep["trimlines"]
+                 if any(isinstance(f.Surface, Part.OffsetSurface) for f in
+                        solid.ancestorsOfType(solid.getElement(t["edge"]), Part.Face))]
+    assert len(on_offset) == 1
+    e = solid.getElement(on_offset[0]["edge"])
+    for t in ck.sample_params(e, 21):
+        assert abs(side.distToShape(Part.Vertex(e.valueAt(t)))[0] - 0.5) < 1e-6
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid

@@ -635,11 +635,10 @@ def _cut_face(face, tools, sharp, legs, tol):
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
     pieces = _fused(face, tools, tol)
-    if isinstance(pieces, float):
+    if isinstance(pieces, str):
         again = _fused(face, [_restarted(e) for e in tools], tol)
-        if isinstance(again, float):
-            raise ValueError("OCCT's general fuse lost part of the face (%.6g of %.6g), as "
-                             "where a trimline crosses the face's seam" % (pieces, face.Area))
+        if isinstance(again, str):
+            raise ValueError(pieces)
         pieces = again
 
     def touches(piece, edge):
@@ -654,11 +653,17 @@ def _cut_face(face, tools, sharp, legs, tol):
 
 def _fused(face, tools, tol):
     """The pieces of face cut along the edges `tools` by OCCT's general fuse (fuzzy value
-    tol), or their total area when they do not make up the face (areas agree to about
-    1e-6; 1e-3 is allowed): the fuse lost part of it."""
-    pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
+    tol), or what went wrong (str): the fuse failed, or its pieces do not make up the
+    face (areas agree to about 1e-6; 1e-3 is allowed)."""
+    try:
+        pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
+    except Exception as ex:  # FreeCAD's Part and OCCT errors come in several classes
+        return occt_message(ex)
     area = sum(f.Area for f in pieces)
-    return area if abs(area - face.Area) > 1e-3 * face.Area else pieces
+    if abs(area - face.Area) > 1e-3 * face.Area:
+        return ("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
+                "trimline crosses the face's seam" % (area, face.Area))
+    return pieces
 
 
 def _restarted(edge):
@@ -668,7 +673,8 @@ def _restarted(edge):
     face's seam, keeping only 8.5 of 1235 mm2 of a lofted face with a boss on its seam:
     the cut then merges the vertex with the seam's crossing. Started away from the seam,
     the trimline crosses it as any edge does, and the pieces sew to the blend's own
-    edge, whose vertex is left where it is."""
+    edge, whose vertex is left where it is. (Cutting the offset of a lofted face there
+    raised "MultiFusion failed" instead.)"""
     if not edge.isClosed():
         return edge
     c = edge.Curve.copy()
