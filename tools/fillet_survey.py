@@ -118,6 +118,8 @@ def parts():
                     % n, pl, [edge], 1.0))
     bs, edges = shapes.loft_with_boss(0.0)
     out.append(("boss on a loft, on its seam", bs, edges, 1.0))
+    ol, _, edge = shapes.offset_loft()
+    out.append(("loft offset by 0.5 (OffsetSurface), its bottom rim", ol, [edge], 1.0))
     et, edges = shapes.equal_tee()
     out.append(("equal pipes r = 6 in a tee (faces tangent at 2 points)", et, edges, 1.0))
     ns, edge = shapes.nurbs_sphere_through_plate(45.0)
