@@ -3,10 +3,11 @@
 kept and why), the worst continuity over its trimlines, whether the solid is valid, the
 time, and the same check on OCCT's own fillet of the same edges. With --validation it also times
 OCCT's validity checks on the filleted shaft-on-plate solid. With --all-edges it fillets
-every edge of some parts instead (the corners filled, the fillets kept and why).
+every edge of some parts instead (the corners filled, the fillets kept and why); with
+--random N, the junctions of N random parts (bosses, holes, cones, spheres on a plate).
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
-       [--validation] [--all-edges]
+       [--validation] [--all-edges] [--random N [--seed S]]
 """
 import argparse
 import os
@@ -210,6 +211,67 @@ def all_edges():
                  rep["solid_check"], time.perf_counter() - t0, "; ".join(why)))
 
 
+def random_part(rng):
+    """(kind, solid, names of the junction edges, radius): a 40 x 40 x 6 plate with a
+    boss, hole, tilted boss, cone, sphere or turned box of random size and place."""
+    plate = Part.makeBox(40, 40, 6, V(-20, -20, -6))
+    kind = rng.choice(["boss", "hole", "tilted boss", "cone boss", "sphere bump", "box boss"])
+    r, x, y = rng.uniform(2, 8), rng.uniform(-8, 8), rng.uniform(-8, 8)
+    if kind == "boss":
+        tool = Part.makeCylinder(r, 10, V(x, y, -1))
+    elif kind == "hole":
+        tool = Part.makeCylinder(r, 20, V(x, y, -10))
+    elif kind == "tilted boss":
+        tool = Part.makeCylinder(r, 12, V(x, y, -3),
+                                 V(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), 1))
+    elif kind == "cone boss":
+        tool = Part.makeCone(r, r * rng.uniform(0.2, 0.9), 10, V(x, y, -1))
+    elif kind == "sphere bump":
+        tool = Part.makeSphere(r, V(x, y, rng.uniform(-0.8 * r, 0.5 * r)))
+    else:
+        tool = Part.makeBox(r, 1.3 * r, 5, V(x, y, -1))
+        tool.rotate(V(x, y, 0), V(0, 0, 1), rng.uniform(0, 90))
+    s = (plate.cut(tool) if kind == "hole" else plate.fuse(tool)).removeSplitter()
+    radius = rng.choice([0.3, 0.7, 1.0, 1.5, 2.5])
+
+    def junction(e):  # on the tool and on the plate's top (a hole: inside the plate)
+        faces = s.ancestorsOfType(e, Part.Face)
+        if len(faces) != 2 or e.Degenerated or any(e.isSeam(f) for f in faces) or \
+                tool.distToShape(e)[0] > 1e-6:
+            return False
+        return abs(e.BoundBox.ZMax) < 1e-6 if kind != "hole" else e.BoundBox.ZMin > -6 + 1e-6
+    return kind, s, names(s, junction), radius
+
+
+def random_survey(count, seed):
+    """Fillet the junctions of `count` random parts (random_part, seeded): lists those
+    not G2, valid and passing the BOP check, and the errors, then the totals."""
+    import random
+    rng = random.Random(seed)
+    totals = {}
+    for k in range(count):
+        kind, s, edges, r = random_part(rng)
+        if len(s.Solids) != 1 or not edges:
+            outcome = "skipped (no single solid, or no junction edge)"
+        else:
+            try:
+                solid, rep = C2Blend.fillet_report(s, edges, r)
+                ok = rep["verdict"] == "G2" and solid.isValid() and \
+                    rep["solid_check"] == "passes BRepCheck and the BOP check"
+                outcome = "G2, valid, passes the BOP check" if ok else "other"
+                if not ok:
+                    print("%d %s R=%g: %s, %s; %s" % (k, kind, r, rep["verdict"],
+                                                     rep["solid_check"], "; ".join(
+                                                         x["reason"] for x in
+                                                         rep["kept_occt_faces"])))
+            except C2Blend.Error as ex:
+                outcome = "error"
+                print("%d %s R=%g: error: %s" % (k, kind, r, ex))
+        totals[outcome] = totals.get(outcome, 0) + 1
+    for outcome, n in sorted(totals.items()):
+        print("%4d %s" % (n, outcome))
+
+
 def median_ms(f, n=5):
     ts = []
     for _ in range(n):
@@ -239,7 +301,13 @@ def main():
     ap.add_argument("--validation", action="store_true", help="also time OCCT's validity checks")
     ap.add_argument("--all-edges", action="store_true",
                     help="fillet every edge of some parts instead")
+    ap.add_argument("--random", type=int, metavar="N",
+                    help="instead, fillet the junctions of N random parts")
+    ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
     a = ap.parse_args()
+    if a.random:
+        random_survey(a.random, a.seed)
+        return
     if a.all_edges:
         all_edges()
         return
