@@ -2272,6 +2272,16 @@ def test_edges_between_tangent_faces_in_a_selection_are_left_out():
     assert abs(solid.Volume - alone.Volume) < 1e-9 * alone.Volume
 
 
+def _trimline_on(solid, rep, kind):
+    """The one trimline of the report whose edge in solid bounds a face whose surface is
+    of class `kind` (Part.Cylinder, ...)."""
+    on = [solid.getElement(t["edge"]) for t in rep["trimlines"]
+          if any(isinstance(f.Surface, kind) for f in
+                 solid.ancestorsOfType(solid.getElement(t["edge"]), Part.Face))]
+    assert len(on) == 1
+    return on[0]
+
+
 def test_boss_on_a_seam_is_g2():
     """A boss whose junction with a lofted face straddles that face's seam, the
     junction's vertex on it. OCCT's general fuse lost all but 8.5 of the face's
@@ -2287,11 +2297,7 @@ def test_boss_on_a_seam_is_g2():
     assert_g2(rep)
     assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
-    boss = [t for t in rep["trimlines"]
-            if any(isinstance(f.Surface, Part.Cylinder) for f in
-                   solid.ancestorsOfType(solid.getElement(t["edge"]), Part.Face))]
-    assert len(boss) == 1
-    e = solid.getElement(boss[0]["edge"])
+    e = _trimline_on(solid, rep, Part.Cylinder)
     for t in ck.sample_params(e, 41):
         p = e.valueAt(t)
         assert abs(math.hypot(p.y, p.z - 10) - 3) < 1e-6
@@ -2317,11 +2323,7 @@ def test_rim_of_an_offset_loft_is_g2():
     assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
                                          "that is only C0 (")
     assert "as in the input solid" in rep["solid_check"]
-    on_offset = [t for t in rep["trimlines"]
-                 if any(isinstance(f.Surface, Part.OffsetSurface) for f in
-                        solid.ancestorsOfType(solid.getElement(t["edge"]), Part.Face))]
-    assert len(on_offset) == 1
-    e = solid.getElement(on_offset[0]["edge"])
+    e = _trimline_on(solid, rep, Part.OffsetSurface)
     for t in ck.sample_params(e, 21):
         assert abs(side.distToShape(Part.Vertex(e.valueAt(t)))[0] - 0.5) < 1e-6
 
