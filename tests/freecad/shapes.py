@@ -89,6 +89,20 @@ def offset_loft():
                          if e.BoundBox.ZMax < -0.5 + 1e-6)
 
 
+def stepped_shaft():
+    """A turned part: the profile (0, 0) (10, 0) (10, 3) (6, 3) (6, 8) (8, 10) (0, 10) in
+    the xz plane revolved about z: a collar r = 10, a shank r = 6, then a cone at 45
+    degrees out to a top disk r = 8. Returns (solid, names of its 5 circular edges
+    between two faces, from the bottom up: z = 0, 3 (r = 10), 3 (r = 6), 8 and 10)."""
+    pts = [(0, 0), (10, 0), (10, 3), (6, 3), (6, 8), (8, 10), (0, 10), (0, 0)]
+    s = Part.Face(Part.makePolygon([V(x, 0, z) for x, z in pts])).revolve(V(), V(0, 0, 1),
+                                                                         360)
+    circles = [(e.BoundBox.ZMin, e.BoundBox.XLength, "Edge%d" % (i + 1))
+               for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Circle)
+               and len(s.ancestorsOfType(e, Part.Face)) == 2]
+    return s, [n for _, _, n in sorted(circles)]
+
+
 def loft_tube():
     """Lofted solid through circles r = 3, 4, 3 at z = -15, 0, 15; returns (solid, name
     of the top edge). OCCT makes the side one polynomial patch (degree 14 around), whose

@@ -2328,6 +2328,42 @@ def test_rim_of_an_offset_loft_is_g2():
         assert abs(side.distToShape(Part.Vertex(e.valueAt(t)))[0] - 0.5) < 1e-6
 
 
+def test_a_cone_between_two_fillets_keeps_its_middle():
+    """The stepped shaft's cone (45 degrees) between the shank r = 6 at z = 8 and the top
+    disk at z = 10, both edges filleted at R = 0.8. The ball's contacts lie R tan(22.5
+    deg) and R tan(67.5 deg) along the slant from the two edges, at z = 8 + 0.8 (sqrt 2 -
+    1) / sqrt 2 and 10 - 0.8 (sqrt 2 + 1) / sqrt 2. The cone's seam, which OCCT's fillet
+    shortens at both ends, counted as a consumed sharp edge, so the strip of cone between
+    the trimlines was dropped as lying beyond one: both blends were kept as OCCT's, their
+    sewing left free edges. Now G2, valid, passing the BOP check, with the strip there:
+    its area is the frustum's, pi (r1 + r2) s, with r = z - 2 and s = sqrt 2 dz."""
+    s, edges = shapes.stepped_shaft()
+    solid, rep = C2Blend.fillet_report(s, [edges[3], edges[4]], 0.8, label="Shaft")
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 2
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert_g2(rep)
+    r2 = math.sqrt(2.0)
+    lo, hi = 8.0 + 0.8 * (r2 - 1) / r2, 10.0 - 0.8 * (r2 + 1) / r2
+    cones = [f for f in solid.Faces if isinstance(f.Surface, Part.Cone)]
+    assert len(cones) == 1
+    assert cones[0].BoundBox.ZMin == pytest.approx(lo, abs=1e-6)
+    assert cones[0].BoundBox.ZMax == pytest.approx(hi, abs=1e-6)
+    area = math.pi * ((lo - 2.0) + (hi - 2.0)) * r2 * (hi - lo)
+    assert cones[0].Area == pytest.approx(area, rel=1e-7)
+
+
+def test_every_circle_of_a_stepped_shaft_is_g2():
+    """All five circles of the stepped shaft at R = 0.8 (two convex, three concave, one
+    face cut along two trimlines): five G2 blends, nothing kept."""
+    s, edges = shapes.stepped_shaft()
+    solid, rep = C2Blend.fillet_report(s, edges, 0.8, label="Shaft")
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 5
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert_g2(rep)
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid

@@ -857,8 +857,10 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                     o.inside.append(leg)
                     o.legs.append(leg)
     kept = Part.Compound(result.Edges)
-    sharp = [e for e in shape.Edges if not any(e.isSame(r) for r in result.Edges)
-             and _consumed(e, kept, tol)]
+    # a seam is no corner, whatever part of it the fillets take: the piece of a cone
+    # left between two fillets holds a piece of its seam, none of which OCCT keeps
+    sharp = [e for e in shape.Edges if len(ck.edge_faces(shape, e)) == 2
+             and not any(e.isSame(r) for r in result.Edges) and _consumed(e, kept, tol)]
     for t in touched:
         try:
             pieces = _cut_face(t.orig, t.inside, sharp, t.legs, tol)
