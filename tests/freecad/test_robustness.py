@@ -34,6 +34,9 @@ def doc(request):
     d.addObject("Part::Feature", "Rounded").Shape = b.makeFillet(2.0, [b.Edges[0]])
     d.addObject("Part::Feature", "Inverted").Shape = b.reversed()
     d.addObject("Part::Feature", "ClosedShell").Shape = Part.Shell(Part.makeBox(10, 10, 10).Faces)
+    fs = Part.makeBox(10, 10, 10).Faces  # one face turned against the rest: not valid
+    d.addObject("Part::Feature", "Misoriented").Shape = Part.Solid(
+        Part.Shell([fs[0].reversed()] + fs[1:]))
     d.recompute()
     yield d
     FreeCAD.closeDocument(d.Name)
@@ -80,6 +83,10 @@ BAD_FILLETS = [
     ("ClosedShell", ["Edge1"], 2.0, {}, r"ClosedShell: the shape is a Shell with 0 solid\(s\) "
      r"and 6 face\(s\) outside them; a fillet needs one closed solid; its faces close up: make "
      r"them a solid first \(Part > Convert to solid"),
+    ("Misoriented", ["Edge10"], 2.0, {}, r"Misoriented: OCCT's rolling-ball fillet failed "
+     r"\(the result is not a valid solid\) on a solid that is not valid itself \(isValid\(\) "
+     r"is False\): repair it first; .* shape\.fix\(1e-7, 1e-7, 1e-7\) mends faults such as "
+     r"a face oriented against the rest of its shell$"),
     ("Rounded", [lambda s: next(  # where OCCT's fillet meets a face, tangentially
         "Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Line)
         and any(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face)))],
@@ -103,6 +110,19 @@ def test_bad_fillet_leaves_document_unchanged(doc, name, edges, radius, kw, frag
         make.make_fillet(obj, edges, radius, **kw)
     assert shapes.document_state(doc) == before
     assert doc.UndoCount == undo  # no transaction was left behind
+
+
+def test_the_advice_for_a_misoriented_solid_mends_it():
+    """The Misoriented solid of the table, mended as its message advises: valid, the
+    box's volume again, and its fillet G2. Before the message was written, OCCT's failure
+    on it was put down to the radius ("whatever the radius")."""
+    fs = Part.makeBox(10, 10, 10).Faces
+    s = Part.Solid(Part.Shell([fs[0].reversed()] + fs[1:]))
+    assert not s.isValid()
+    s.fix(1e-7, 1e-7, 1e-7)
+    assert s.isValid() and abs(s.Volume - 1000.0) < 1e-9
+    solid, rep = fl.fillet(s, ["Edge10"], 2.0, label="Misoriented")
+    assert solid.isValid() and rep["verdict"] == "G2"
 
 
 BAD_BLENDS = [
@@ -314,7 +334,8 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
             break
         doc.undo()
     assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet", "Pair", "OpenBox",
-                                             "Rounded", "Inverted", "ClosedShell"]
+                                             "Rounded", "Inverted", "ClosedShell",
+                                             "Misoriented"]
     doc.redo()
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()

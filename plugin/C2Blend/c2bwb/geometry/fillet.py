@@ -1290,6 +1290,18 @@ def _rolling_ball(shape, edges, radius):
     return result, None
 
 
+def _invalid_input(shape, msg):
+    """The message for OCCT's fillet failing (msg) on a solid that fails isValid(): no
+    radius is to blame, the solid is (as one whose faces are not oriented alike, which
+    BRepCheck's own messages, FreeCAD's check(), pass over as "No error")."""
+    found = bc.problems(shape, bop=False)
+    return ("OCCT's rolling-ball fillet failed (%s) on a solid that is not valid itself "
+            "(isValid() is False%s): repair it first; Part > Check geometry shows what is "
+            "wrong, and in a macro shape.fix(1e-7, 1e-7, 1e-7) mends faults such as a "
+            "face oriented against the rest of its shell"
+            % (msg, "; BRepCheck: %s" % found if found and found != "No error" else ""))
+
+
 def _rolling_ball_failure(shape, edges, radius, msg):
     """The message for a failed rolling-ball fillet, with the radius nearest to `radius`
     that OCCT accepts on these edges: halving from radius down to radius / 1024, else
@@ -1349,6 +1361,8 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     selected = [e for _, e in names]
     result, msg = _rolling_ball(shape, selected, radius)
+    if result is None and not shape.isValid():
+        raise C2BlendError(_invalid_input(shape, msg), label)
     if result is None:
         raise C2BlendError(_rolling_ball_failure(shape, selected, radius, msg), where_all,
                            "radius")
