@@ -130,6 +130,12 @@ def parts():
                 names(cl, lambda e: len(cl.ancestorsOfType(e, Part.Face)) == 2 and all(
                     isinstance(f.Surface, Part.BSplineSurface)
                     for f in cl.ancestorsOfType(e, Part.Face))), 0.25))
+    st, edges = shapes.stepped_shaft()
+    out.append(("stepped shaft, the cone's two edges (a strip of cone between)", st,
+                edges[3:], 0.8))
+    out.append(("stepped shaft, its five circles", st, edges, 0.8))
+    pair = Part.makeCompound([b, Part.makeBox(10, 10, 10, V(20, 0, 0))])
+    out.append(("compound of two boxes, an edge of each", pair, ["Edge1", "Edge13"], 2.0))
     return out
 
 

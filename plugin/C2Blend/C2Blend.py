@@ -28,6 +28,9 @@ def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 
                   tension=1.0, label="Shape"):
     """Fillet edges of shape with the PDE blend; returns (Part.Solid, report dict).
 
+    shape: one solid, or a compound of solids (each with selected edges is filleted on
+    its own, as OCCT's makeFillet does; the result is then a Part.Compound of them in
+    their order, and the report names the compound's edges and faces).
     edges: Part.Edge objects of shape, names ('Edge3') or 1-based indices (a single one
     stands for a list of one; an edge given twice is filleted once).
     radius: rolling-ball radius (model units) fixing the trimlines.
@@ -40,7 +43,8 @@ def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1), tension=1.0,
            label="Shape"):
-    """Fillet edges of shape; returns the filleted Part.Solid (see fillet_report)."""
+    """Fillet edges of shape; returns the filleted Part.Solid, or Part.Compound for a
+    compound of solids (see fillet_report)."""
     return fillet_report(shape, edges, radius, continuity, shape_params, tension, label)[0]
 
 

@@ -34,6 +34,8 @@ def doc(request):
     d.addObject("Part::Feature", "Rounded").Shape = b.makeFillet(2.0, [b.Edges[0]])
     d.addObject("Part::Feature", "Inverted").Shape = b.reversed()
     d.addObject("Part::Feature", "ClosedShell").Shape = Part.Shell(Part.makeBox(10, 10, 10).Faces)
+    d.addObject("Part::Feature", "Glued").Shape = Part.makeBox(10, 10, 10).generalFuse(
+        [Part.makeBox(10, 10, 10, FreeCAD.Vector(10, 0, 0))])[0]  # sharing a face
     fs = Part.makeBox(10, 10, 10).Faces  # one face turned against the rest: not valid
     d.addObject("Part::Feature", "Misoriented").Shape = Part.Solid(
         Part.Shell([fs[0].reversed()] + fs[1:]))
@@ -74,9 +76,12 @@ BAD_FILLETS = [
     ("Box", ["Edge1"], 2.0, {"shape_params": (1, math.inf, 1, 1)},
      r"Box: shape_params: shape parameters must be finite"),
     ("Box", ["Edge1", "Edge2", "Edge3"], 6.0, {}, r"Box\.Edge1, Box\.Edge2, Box\.Edge3: "),
-    ("Pair", ["Edge1"], 2.0, {}, r"Pair: the shape is a Compound with 2 solid\(s\) and 0 "
-     r"face\(s\) outside them; a fillet needs one closed solid; fillet each solid on its own "
-     r"\(Part > Compound > Explode compound"),
+    ("Pair", ["Edge1"], 20.0, {}, r"Pair\.Edge1: OCCT's rolling-ball fillet of radius 20 "
+     r"failed"),  # its first solid's error, the compound's edge named
+    ("Pair", ["Edge13"], 2.0, {"tension": 0.0}, r"Pair: tension must be a positive number"),
+    ("Glued", ["Edge1"], 2.0, {}, r"Glued: the shape is a Compound of 2 solids that share "
+     r"faces or edges \(as a CompSolid's do\), so a fillet of one would change another: make "
+     r"one solid of them \(Part > Boolean > Union\), or separate them"),
     ("OpenBox", ["Edge1"], 2.0, {}, r"OpenBox: the shape is a Shell with 0 solid\(s\) and 5 "
      r"face\(s\) outside them; a fillet needs one closed solid; faces with free edges bound no "
      r"volume: close the shell first"),
@@ -335,7 +340,7 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
         doc.undo()
     assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet", "Pair", "OpenBox",
                                              "Rounded", "Inverted", "ClosedShell",
-                                             "Misoriented"]
+                                             "Glued", "Misoriented"]
     doc.redo()
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()

@@ -1874,6 +1874,77 @@ def _corner_area(radius, tension=1.0):
     return 0.5 * abs(P.polyval(1.0, f) - P.polyval(0.0, f))
 
 
+def test_a_compound_of_solids_is_filleted_solid_by_solid():
+    """A compound of two 10-boxes and the shaft on its plate (as OCCT's makeFillet takes
+    it): Edge1 of the first box and the shaft's junction (the compound's names) filleted
+    at R = 2, the second box untouched. A compound of the three solids in their order:
+    the box's volume is the closed form 1000 - 10 A (A the quintic corner area), the
+    second box is the input's own, each solid valid and passing the BOP check, G2. Every
+    edge and face the report names is the compound's: each trimline edge lies between
+    the two faces named, on the solid of its blend, and the check of those edges by
+    name measures them G2. A document object on the compound follows too."""
+    sp, junction = shapes.shaft_on_plate()
+    sp.translate(V(0, 0, 30))
+    boxes = [Part.makeBox(10, 10, 10), Part.makeBox(10, 10, 10, V(20, 0, 0))]
+    c = Part.makeCompound(boxes + [sp])
+    k = next(i for i, e in enumerate(sp.Edges) if e.isSame(sp.getElement(junction)))
+    names = ["Edge1", "Edge%d" % (len(boxes[0].Edges) + len(boxes[1].Edges) + k + 1)]
+    out, rep = C2Blend.fillet_report(c, names, 2.0, label="Parts")
+    assert out.ShapeType == "Compound" and len(out.Solids) == 3
+    for solid in out.Solids:
+        assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert_g2(rep)
+    assert [(x["solid"], x["edges"]) for x in rep["solids"]] == [
+        (1, ["Parts.Edge1"]), (3, ["Parts.%s" % names[1]])]
+    assert [b["where"] for b in rep["blends"]] == ["Parts.Edge1", "Parts.%s" % names[1]]
+    assert out.Solids[1].isSame(c.Solids[1])
+    assert out.Solids[0].Volume == pytest.approx(1000.0 - 10.0 * _corner_area(2.0), rel=1e-9)
+    assert rep["volume"] == pytest.approx(out.Volume, rel=1e-12)
+    assert len(rep["trimlines"]) == 4
+    for t in rep["trimlines"]:
+        e = out.getElement(t["edge"])
+        faces = [out.getElement(f) for f in t["faces"]]
+        assert all(any(g.isSame(f) for g in out.ancestorsOfType(e, Part.Face)) for f in faces)
+    owners = [next(i for i, x in enumerate(out.Solids) if any(
+        y.isSame(out.getElement(t["edge"])) for y in x.Edges)) for t in rep["trimlines"]]
+    assert owners == [0, 0, 2, 2]
+    check = C2Blend.check(out, [t["edge"] for t in rep["trimlines"]])
+    assert check["verdict"] == "G2"
+    assert [sorted(r["faces"]) for r in check["edges"]] == \
+        [sorted(t["faces"]) for t in rep["trimlines"]]
+    doc = FreeCAD.newDocument("Compound")
+    try:
+        base = doc.addObject("Part::Feature", "Parts")
+        base.Shape = c
+        f = make.make_fillet(base, names, 2.0)
+        assert "Invalid" not in f.State and f.Verdict == "G2"
+        assert len(f.Shape.Solids) == 3
+        assert f.Shape.Volume == pytest.approx(out.Volume, rel=1e-12)
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
+def test_a_solids_names_are_shifted_to_the_compounds():
+    """solids._renamed on a solid's report: result edges and faces by the result's
+    offsets, input faces in reasons ("FaceK of the original solid") by the input's, and
+    nothing else (the selected edges are named as the compound's already)."""
+    from c2bwb.geometry import solids as sl
+    rep = {"trimlines": [{"edge": "Edge3", "faces": ["Face1", "Face7"]}],
+           "mitres": [{"edge": "Edge12", "faces": ["Face2", "Face3"]}], "junctions": [],
+           "corner_patches": [{"face": "Face9"}],
+           "kept_occt_faces": [{"where": "Parts.Edge40", "reason": (
+               "face Face4 of the original solid cannot be cut along its blend; face Face4 "
+               "of the filleted solid: Face12 is no face of the original solid")}]}
+    sl._renamed(rep, 6, 10, 100)
+    assert rep["trimlines"] == [{"edge": "Edge103", "faces": ["Face11", "Face17"]}]
+    assert rep["mitres"] == [{"edge": "Edge112", "faces": ["Face12", "Face13"]}]
+    assert rep["corner_patches"] == [{"face": "Face19"}]
+    assert rep["kept_occt_faces"] == [{"where": "Parts.Edge40", "reason": (
+        "face Face10 of the original solid cannot be cut along its blend; face Face4 of "
+        "the filleted solid: Face12 is no face of the original solid")}]
+
+
 def test_boss_into_wall():
     """A cylinder boss standing half out of a box's wall, its two concave edges filleted.
     Each blend's end section lies on the top (bottom) face, which grows by the region

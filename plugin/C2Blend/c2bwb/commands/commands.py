@@ -37,7 +37,8 @@ def _edges_of_selection():
     """(object, [edge names]) from the selection; faces etc. are refused by name."""
     sel = FreeCADGui.Selection.getSelectionEx()
     if len(sel) != 1:
-        raise C2BlendError("select edges of exactly one solid (%d objects selected)" % len(sel))
+        raise C2BlendError("select edges of exactly one object, a solid or a compound of solids "
+                           "(%d objects selected)" % len(sel))
     s = sel[0]
     bad = [n for n in s.SubElementNames if not n.startswith("Edge")]
     if bad:

@@ -43,6 +43,7 @@ from .contact import Contact, ContactError
 from . import bopcheck as bc
 from . import corners as cn
 from . import ends
+from . import solids as sl
 from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
@@ -153,14 +154,19 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
 
 
 def check_solid(shape, label):
-    """Raise C2BlendError naming `label` unless shape is one closed solid, not inside out."""
+    """Raise C2BlendError naming `label` unless shape is one closed solid, not inside out.
+    (A compound of solids that share no face or edge is filleted solid by solid, each
+    checked here: solids.py.)"""
     solids = [] if shape.isNull() else shape.Solids
     if len(solids) != 1 or len(shape.Faces) != len(solids[0].Faces):
         loose = len(shape.Faces) - sum(len(s.Faces) for s in solids)
-        if len(solids) > 1 and not loose:
-            advice = ("; fillet each solid on its own (Part > Compound > Explode compound "
-                      "gives them; Part > Boolean > Union makes one solid of touching ones)")
-        elif not solids and loose and all(s.isClosed() for s in shape.Shells) and \
+        if len(solids) > 1 and loose <= 0:
+            raise C2BlendError("the shape is a %s of %d solids that share faces or edges "
+                               "(as a CompSolid's do), so a fillet of one would change "
+                               "another: make one solid of them (Part > Boolean > Union), "
+                               "or separate them (Part > Compound > Explode compound) and "
+                               "fillet each" % (shape.ShapeType, len(solids)), label)
+        if not solids and loose and all(s.isClosed() for s in shape.Shells) and \
                 len(shape.Shells) == 1 and len(shape.Shells[0].Faces) == loose:
             advice = ("; its faces close up: make them a solid first (Part > Convert to "
                       "solid, or Part.Solid(shell) in a macro)")
@@ -1346,6 +1352,9 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     Returns (Part.Solid, report dict). Raises C2BlendError naming `label` and the edge.
     Seams and edges between tangent faces among other edges are left out, as OCCT's
     fillet does, and listed in the report's "skipped_edges" with the reason.
+    On a compound of solids, each solid with selected edges is filleted on its own, as
+    OCCT's fillet does (solids.py): the result is then a Part.Compound, and the report
+    also lists the solids filleted ("solids").
     The input shape is not modified.
     """
     t0 = time.perf_counter()
@@ -1353,11 +1362,33 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                                                  label)
     skipped = []  # seams and edges between tangent faces in a larger selection
     names = resolve_edges(shape, edges, label, skipped)
-    check_solid(shape, label)
+
+    def one(solid, names):
+        return _fillet_solid(solid, names, radius, continuity, shape_params, tension, label,
+                             tol_rel, samples, max_samples, bop)
+
+    several = sl.separate(shape)
+    if several:
+        result, report = sl.fillet_each(shape, several, names, label, one, check_solid)
+    else:
+        check_solid(shape, label)
+        result, report = one(shape, names)
+    report["skipped_edges"] = skipped
+    report["seconds"] = time.perf_counter() - t0
+    return result, report
+
+
+def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label, tol_rel,
+                  samples, max_samples, bop):
+    """fillet() of the edges `names` ([(name, Part.Edge of shape)]) of the closed solid
+    `shape`, with the parameters checked (check_params): (solid, report without
+    "skipped_edges")."""
+    t0 = time.perf_counter()
     # OCCT's fillet shares faces and edges with its input, and what follows writes to
     # some of them (a tessellation sets a face's Checked flag): work on a copy
+    index = [next(i for i, e in enumerate(shape.Edges) if e.isSame(edge)) for _, edge in names]
     shape = shape.copy()
-    names = [(n, shape.getElement(n)) for n, _ in names]
+    names = [(n, shape.Edges[i]) for (n, _), i in zip(names, index)]
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     selected = [e for _, e in names]
     result, msg = _rolling_ball(shape, selected, radius)
@@ -1444,7 +1475,6 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
                     "closed": b.chain.closed, "pointwise": b.group is not None}
                    for b in blended],
         "kept_occt_faces": kept,
-        "skipped_edges": skipped,
         "solid_check": solid_check,
         **measured["checks"],
         "volume": solid.Volume, "occt_volume": result.Volume,
