@@ -353,7 +353,9 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
         creased = {k for i, j in pairs for gap, turn, _, tol in [junction(i, j)]
                    if turn > ck.TOL_G1 and gap <= tol for k in (i, j)}
         for k in sorted(creased):
-            if blends[k].data_rel > target:
+            # sampled again from the count reached, if it can still double (at
+            # max_samples the same samples would give the same blend)
+            if blends[k].data_rel > target and 2 * blends[k].samples <= max_samples:
                 blends[k] = solved(runs[k], target, blends[k].samples)
     for i, j in pairs:
         gap, turn, ends_gap, tol = junction(i, j)
