@@ -30,7 +30,8 @@ def fillet_report(shape, edges, radius, continuity="C2", shape_params=(1, 1, 1, 
 
     shape: one solid, or a compound of solids (each with selected edges is filleted on
     its own, as OCCT's makeFillet does; the result is then a Part.Compound of them in
-    their order, and the report names the compound's edges and faces).
+    their order, then any wires, edges and vertices beside them, and the report names
+    the compound's edges and faces).
     edges: Part.Edge objects of shape, names ('Edge3') or 1-based indices (a single one
     stands for a list of one; an edge given twice is filleted once).
     radius: rolling-ball radius (model units) fixing the trimlines.

@@ -1925,6 +1925,32 @@ def test_a_compound_of_solids_is_filleted_solid_by_solid():
         FreeCAD.closeDocument(doc.Name)
 
 
+def test_a_wire_beside_solids_in_a_compound_is_kept():
+    """A compound of a line (its Edge1), a box and another: the box's Edge1 is the
+    compound's Edge2. Filleted at R = 2: the solids come first in the result and the
+    line after them, unchanged; the box's volume is the closed form; each trimline,
+    named in the result, lies between the faces named. With one box only (and the line)
+    the result is a compound of the two, not the solid alone."""
+    line = Part.makeLine(V(0, 0, 20), V(10, 0, 20))
+    for boxes in ([Part.makeBox(10, 10, 10), Part.makeBox(10, 10, 10, V(20, 0, 0))],
+                  [Part.makeBox(10, 10, 10)]):
+        c = Part.makeCompound([line] + boxes)
+        assert c.Edges[0].isSame(line) and c.Edges[1].isSame(boxes[0].Edges[0])
+        out, rep = C2Blend.fillet_report(c, ["Edge2"], 2.0, label="Mixed")
+        assert out.ShapeType == "Compound" and len(out.Solids) == len(boxes)
+        assert out.childShapes()[-1].isSame(line)
+        assert out.Solids[0].Volume == pytest.approx(1000.0 - 10.0 * _corner_area(2.0),
+                                                     rel=1e-9)
+        if len(boxes) == 2:
+            assert out.Solids[1].isSame(boxes[1])
+        assert_g2(rep)
+        assert [b["where"] for b in rep["blends"]] == ["Mixed.Edge2"]
+        for t in rep["trimlines"]:
+            e = out.getElement(t["edge"])
+            assert all(any(g.isSame(out.getElement(f)) for g in out.ancestorsOfType(e, Part.Face))
+                       for f in t["faces"])
+
+
 def test_a_solids_names_are_shifted_to_the_compounds():
     """solids._renamed on a solid's report: result edges and faces by the result's
     offsets, input faces in reasons ("FaceK of the original solid") by the input's, and

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Fillets on a compound of several solids, as OCCT's makeFillet makes them: each solid
 with selected edges is filleted on its own (fillet.py), the others are kept, and the
-results form a compound in the same order. The report is one, and every element it
+results form a compound in the same order (wires, edges and vertices in the compound
+follow them, unchanged). The report is one, and every element it
 names (the selected edges, the faces of the input, the faces and edges of the result)
 is named as in the compound, the way FreeCAD's selection names it."""
 import re
@@ -13,19 +14,32 @@ from ..errors import C2BlendError
 from . import check as ck
 
 
+def _leaves(shape):
+    """The shapes in a compound that are not compounds themselves, nested ones opened."""
+    for c in shape.childShapes():
+        if c.ShapeType == "Compound":
+            yield from _leaves(c)
+        else:
+            yield c
+
+
 def separate(shape):
-    """The solids of `shape` when it is a compound of two or more solids that share no
-    face or edge and leave no face outside them; None otherwise (one solid, or a shape
-    that fillet.check_solid refuses, saying why)."""
+    """(solids, others) when `shape` is a compound of two or more solids, or of one with
+    wires, edges or vertices beside it (others, kept in the result as they are), whose
+    solids share no face or edge, and with no face outside them; None otherwise: one
+    solid, or a shape that fillet.check_solid refuses, saying why."""
     if shape.isNull() or shape.ShapeType not in ("Compound", "CompSolid"):
         return None
     solids = shape.Solids
-    if len(solids) < 2:
+    others = [c for c in _leaves(shape) if c.ShapeType not in ("Solid", "CompSolid")]
+    if any(c.ShapeType in ("Face", "Shell") for c in others) or not solids or \
+            (len(solids) == 1 and not others):
         return None
     for kind in ("Faces", "Edges"):
-        if sum(len(getattr(s, kind)) for s in solids) != len(getattr(shape, kind)):
+        shared = {x.hashCode() for s in solids for x in getattr(s, kind)}
+        if len(shared) != sum(len(getattr(s, kind)) for s in solids):
             return None
-    return solids
+    return solids, others
 
 
 def _offsets(shapes, kind):
@@ -67,15 +81,17 @@ def _renamed(rep, faces_in, faces_out, edges_out):
     return rep
 
 
-def fillet_each(shape, solids, names, label, fillet_one, check_one):
+def fillet_each(shape, parts, names, label, fillet_one, check_one):
     """Fillet the selected edges `names` ([(name in shape, Part.Edge of shape)]) of the
-    compound `shape` of `solids` (separate()): fillet_one(solid, its names) -> (solid,
-    report) for each solid with edges, after check_one(solid, where) (which raises for
-    a solid inside out). Returns (Part.Compound of the solids in their order, report):
+    compound `shape` of parts = (solids, others) (separate()): fillet_one(solid, its
+    names) -> (solid, report) for each solid with edges, after check_one(solid, where)
+    (which raises for a solid inside out). Returns (Part.Compound of the solids in
+    their order, then the others, report):
     the reports' lists joined, the worst verdict, the volumes and times summed, and
     "solids": [{"solid": number in the compound, "edges", "verdict", "solid_check"}].
     A C2BlendError of one solid is raised with its faces named as the compound's."""
     t0 = time.perf_counter()
+    solids, others = parts
     owner = [next(i for i, s in enumerate(solids) if any(e.isSame(x) for x in s.Edges))
              for _, e in names]
     faces_in = _offsets(solids, "Faces")
@@ -93,7 +109,7 @@ def fillet_each(shape, solids, names, label, fillet_one, check_one):
                                ex.kind) from None
         out.append(solid)
         done.append((i, rep))
-    result = Part.Compound(out)
+    result = Part.Compound(out + others)
     faces_out, edges_out = _offsets(out, "Faces"), _offsets(out, "Edges")
     reports = [(i, _renamed(rep, faces_in[i], faces_out[i], edges_out[i]))
                for i, rep in done]
