@@ -1371,7 +1371,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
 
     several = sl.separate(shape)
     if several:
-        result, report = sl.fillet_each(shape, several, names, label, one, check_solid)
+        result, report = sl.fillet_each(several, names, label, one, check_solid)
     else:
         check_solid(shape, label)
         result, report = one(shape, names)

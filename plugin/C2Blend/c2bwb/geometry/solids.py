@@ -2,9 +2,9 @@
 """Fillets on a compound of several solids, as OCCT's makeFillet makes them: each solid
 with selected edges is filleted on its own (fillet.py), the others are kept, and the
 results form a compound in the same order (wires, edges and vertices in the compound
-follow them, unchanged). The report is one, and every element it
-names (the selected edges, the faces of the input, the faces and edges of the result)
-is named as in the compound, the way FreeCAD's selection names it."""
+follow them, unchanged). The report is one, and every element it names (the selected
+edges, the faces of the input, the faces and edges of the result) is named as in the
+compound, the way FreeCAD's selection names it."""
 import re
 import time
 
@@ -81,15 +81,15 @@ def _renamed(rep, faces_in, faces_out, edges_out):
     return rep
 
 
-def fillet_each(shape, parts, names, label, fillet_one, check_one):
-    """Fillet the selected edges `names` ([(name in shape, Part.Edge of shape)]) of the
-    compound `shape` of parts = (solids, others) (separate()): fillet_one(solid, its
-    names) -> (solid, report) for each solid with edges, after check_one(solid, where)
-    (which raises for a solid inside out). Returns (Part.Compound of the solids in
-    their order, then the others, report):
-    the reports' lists joined, the worst verdict, the volumes and times summed, and
-    "solids": [{"solid": number in the compound, "edges", "verdict", "solid_check"}].
-    A C2BlendError of one solid is raised with its faces named as the compound's."""
+def fillet_each(parts, names, label, fillet_one, check_one):
+    """Fillet the selected edges `names` ([(name in the compound, Part.Edge)]) of a
+    compound of parts = (solids, others) (separate()): fillet_one(solid, its names) ->
+    (solid, report) for each solid with edges, after check_one(solid, where) (which
+    raises for a solid inside out). Returns (Part.Compound of the solids in their order,
+    then the others, report): the reports' lists joined, the worst verdict, the volumes
+    and times summed, and "solids": [{"solid": number in the compound, "edges",
+    "verdict", "solid_check"}]. A C2BlendError of one solid is raised with its faces
+    named as the compound's."""
     t0 = time.perf_counter()
     solids, others = parts
     owner = [next(i for i, s in enumerate(solids) if any(e.isSame(x) for x in s.Edges))
