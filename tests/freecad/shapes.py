@@ -103,6 +103,14 @@ def stepped_shaft():
     return s, [n for _, _, n in sorted(circles)]
 
 
+def misoriented_box():
+    """A 10-box made a solid from its faces with the first one reversed: a face oriented
+    against the rest of its shell, so the solid fails isValid() (FreeCAD's check()
+    says "No error"); shape.fix(1e-7, 1e-7, 1e-7) mends it."""
+    fs = Part.makeBox(10, 10, 10).Faces
+    return Part.Solid(Part.Shell([fs[0].reversed()] + fs[1:]))
+
+
 def loft_tube():
     """Lofted solid through circles r = 3, 4, 3 at z = -15, 0, 15; returns (solid, name
     of the top edge). OCCT makes the side one polynomial patch (degree 14 around), whose

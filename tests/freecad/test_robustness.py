@@ -36,9 +36,7 @@ def doc(request):
     d.addObject("Part::Feature", "ClosedShell").Shape = Part.Shell(Part.makeBox(10, 10, 10).Faces)
     d.addObject("Part::Feature", "Glued").Shape = Part.makeBox(10, 10, 10).generalFuse(
         [Part.makeBox(10, 10, 10, FreeCAD.Vector(10, 0, 0))])[0]  # sharing a face
-    fs = Part.makeBox(10, 10, 10).Faces  # one face turned against the rest: not valid
-    d.addObject("Part::Feature", "Misoriented").Shape = Part.Solid(
-        Part.Shell([fs[0].reversed()] + fs[1:]))
+    d.addObject("Part::Feature", "Misoriented").Shape = shapes.misoriented_box()
     d.recompute()
     yield d
     FreeCAD.closeDocument(d.Name)
@@ -121,8 +119,7 @@ def test_the_advice_for_a_misoriented_solid_mends_it():
     """The Misoriented solid of the table, mended as its message advises: valid, the
     box's volume again, and its fillet G2. Before the message was written, OCCT's failure
     on it was put down to the radius ("whatever the radius")."""
-    fs = Part.makeBox(10, 10, 10).Faces
-    s = Part.Solid(Part.Shell([fs[0].reversed()] + fs[1:]))
+    s = shapes.misoriented_box()
     assert not s.isValid()
     s.fix(1e-7, 1e-7, 1e-7)
     assert s.isValid() and abs(s.Volume - 1000.0) < 1e-9

@@ -1874,6 +1874,15 @@ def _corner_area(radius, tension=1.0):
     return 0.5 * abs(P.polyval(1.0, f) - P.polyval(0.0, f))
 
 
+def _assert_named_between(out, rep):
+    """Each trimline's edge, by the name the report gives, lies in `out` between the two
+    faces it names."""
+    for t in rep["trimlines"]:
+        e = out.getElement(t["edge"])
+        assert all(any(g.isSame(out.getElement(f)) for g in out.ancestorsOfType(e, Part.Face))
+                   for f in t["faces"])
+
+
 def test_a_compound_of_solids_is_filleted_solid_by_solid():
     """A compound of two 10-boxes and the shaft on its plate (as OCCT's makeFillet takes
     it): Edge1 of the first box and the shaft's junction (the compound's names) filleted
@@ -1902,10 +1911,7 @@ def test_a_compound_of_solids_is_filleted_solid_by_solid():
     assert out.Solids[0].Volume == pytest.approx(1000.0 - 10.0 * _corner_area(2.0), rel=1e-9)
     assert rep["volume"] == pytest.approx(out.Volume, rel=1e-12)
     assert len(rep["trimlines"]) == 4
-    for t in rep["trimlines"]:
-        e = out.getElement(t["edge"])
-        faces = [out.getElement(f) for f in t["faces"]]
-        assert all(any(g.isSame(f) for g in out.ancestorsOfType(e, Part.Face)) for f in faces)
+    _assert_named_between(out, rep)
     owners = [next(i for i, x in enumerate(out.Solids) if any(
         y.isSame(out.getElement(t["edge"])) for y in x.Edges)) for t in rep["trimlines"]]
     assert owners == [0, 0, 2, 2]
@@ -1945,10 +1951,7 @@ def test_a_wire_beside_solids_in_a_compound_is_kept():
             assert out.Solids[1].isSame(boxes[1])
         assert_g2(rep)
         assert [b["where"] for b in rep["blends"]] == ["Mixed.Edge2"]
-        for t in rep["trimlines"]:
-            e = out.getElement(t["edge"])
-            assert all(any(g.isSame(out.getElement(f)) for g in out.ancestorsOfType(e, Part.Face))
-                       for f in t["faces"])
+        _assert_named_between(out, rep)
 
 
 def test_a_solids_names_are_shifted_to_the_compounds():

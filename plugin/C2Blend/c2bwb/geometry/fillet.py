@@ -1388,9 +1388,9 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
     t0 = time.perf_counter()
     # OCCT's fillet shares faces and edges with its input, and what follows writes to
     # some of them (a tessellation sets a face's Checked flag): work on a copy
-    index = [next(i for i, e in enumerate(shape.Edges) if e.isSame(edge)) for _, edge in names]
+    own = [ck.element_name(shape, edge, "Edge") for _, edge in names]  # the solid's names
     shape = shape.copy()
-    names = [(n, shape.Edges[i]) for (n, _), i in zip(names, index)]
+    names = [(n, shape.getElement(o)) for (n, _), o in zip(names, own)]
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     selected = [e for _, e in names]
     result, msg = _rolling_ball(shape, selected, radius)
