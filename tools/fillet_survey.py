@@ -134,6 +134,9 @@ def parts():
     out.append(("stepped shaft, the cone's two edges (a strip of cone between)", st,
                 edges[3:], 0.8))
     out.append(("stepped shaft, its five circles", st, edges, 0.8))
+    fb, edge = shapes.freeform_boss()
+    out.append(("free-form boss, its top outline (pieces meet on its side's seam)", fb,
+                [edge], 0.5))
     pair = Part.makeCompound([b, Part.makeBox(10, 10, 10, V(20, 0, 0))])
     out.append(("compound of two boxes, an edge of each", pair, ["Edge1", "Edge13"], 2.0))
     return out

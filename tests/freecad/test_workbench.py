@@ -2464,6 +2464,46 @@ def test_every_circle_of_a_stepped_shaft_is_g2():
     assert_g2(rep)
 
 
+def test_a_rim_crossing_its_faces_seam_at_a_junction_is_g2():
+    """The free-form boss's top outline at R = 0.5: its side face, an extrusion of a
+    periodic B-spline, is cut into 12 pointwise blends at its knot lines, one of which
+    is its seam. The trimline's loop on the side face then has a vertex 1.1e-9 before
+    the seam, and cutting the face along it raised "MultiFusion failed": OCCT's face was
+    kept. With the loop's ends snapped onto the seam (fl._snapped_to_seams), the cut is
+    made: G2, valid, passing the BOP check. The side face is vertical, so what is left
+    of it is its outline's perimeter (its area / 8) times the contact's height, 8 - R,
+    and ends there."""
+    s, edge = shapes.freeform_boss()
+    side = next(f for f in s.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion))
+    solid, rep = C2Blend.fillet_report(s, [edge], 0.5, label="Boss")
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 12
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert_g2(rep)
+    left = [f for f in solid.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion)]
+    assert sum(f.Area for f in left) == pytest.approx(side.Area / 8.0 * 7.5, rel=1e-9)
+    assert max(f.BoundBox.ZMax for f in left) == pytest.approx(7.5, abs=1e-9)
+
+
+def test_a_loop_just_before_a_seam_cuts_once_snapped():
+    """OCCT's general fuse fails on a face cut by a closed loop of two edges whose
+    vertex lies 1e-9 (in parameter) before the face's seam: here the free-form boss's
+    side, along its isoline at z = 7.5. Snapped onto the seam, the loop cuts the face
+    in two: below the isoline 7.5 / 8 of the face's area (the face is vertical), above
+    it the rest."""
+    s, _ = shapes.freeform_boss()
+    face = next(f for f in s.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion))
+    u0, u1, _, _ = face.ParameterRange
+    v = face.Surface.parameter(face.valueAt(u0, 0.0).projectToPlane(V(0, 0, 7.5),
+                                                                     V(0, 0, 1)))[1]
+    iso, m = face.Surface.vIso(v), 0.5 * (u0 + u1)
+    loop = [iso.toShape(u0 - 1e-9, m), iso.toShape(m, u1 - 1e-9)]
+    assert isinstance(fl._fused(face, loop, 1e-7), str)
+    pieces = fl._fused(face, fl._snapped_to_seams(loop, face, 1e-7), 1e-7)
+    assert sorted(f.Area for f in pieces) == pytest.approx(
+        [face.Area / 16.0, face.Area * 15.0 / 16.0], rel=1e-9)
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid

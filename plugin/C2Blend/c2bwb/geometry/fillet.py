@@ -639,15 +639,21 @@ def _cut_face(face, tools, sharp, legs, tol):
     not touch any of the `sharp` edges the fillets consumed, except along `legs` (those
     of the regions this face or a neighbour grows by, _growth, from the corners where
     fillets end: the piece keeping such a corner keeps the part of a sharp edge along a
-    leg until it grows, _grown)."""
+    leg until it grows, _grown). Where OCCT's general fuse fails, the cut is made
+    again with the closed tools _restarted, then with the tools' ends
+    _snapped_to_seams."""
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
     pieces = _fused(face, tools, tol)
+    for remedy in (lambda: [_restarted(e) for e in tools],
+                   lambda: _snapped_to_seams(tools, face, tol)):
+        if not isinstance(pieces, str):
+            break
+        again = _fused(face, remedy(), tol)
+        if not isinstance(again, str):
+            pieces = again
     if isinstance(pieces, str):
-        again = _fused(face, [_restarted(e) for e in tools], tol)
-        if isinstance(again, str):
-            raise ValueError(pieces)
-        pieces = again
+        raise ValueError(pieces)
 
     def touches(piece, edge):
         if piece.distToShape(edge)[0] > tol:
@@ -695,6 +701,38 @@ def _restarted(edge):
         a, b = c.FirstParameter, c.LastParameter
     h = 0.5 * (b - a)
     return c.toShape(a + h, b + h)
+
+
+def _snapped_to_seams(tools, face, tol):
+    """The tools with their ends within tol of a seam of face moved onto it, each
+    cluster of such ends to one point (the projection of its first end). A loop of
+    trimline edges whose vertex lies 1e-9 before the face's seam (where the pieces of
+    a fillet along a periodic extrusion's rim meet, at the knot line that is its seam)
+    makes OCCT's general fuse fail ("MultiFusion failed"); on the seam, it cuts. An
+    open B-spline edge (as trimlines are) becomes a clamped B-spline whose ends are
+    moved by its end poles, which moves the curve by no more than its ends move; other
+    edges are kept as they are."""
+    seams = [e for e in face.Edges if e.isSeam(face)]
+    targets = []  # (end, its point on a seam)
+    out = []
+    for e in tools:
+        if not seams or e.isClosed() or not isinstance(e.Curve, Part.BSplineCurve):
+            out.append(e)
+            continue
+        c = e.Curve.copy()
+        c.segment(*e.ParameterRange)  # clamped (a periodic curve's too): ends = end poles
+        for index, end in ((1, c.StartPoint), (c.NbPoles, c.EndPoint)):
+            near = next((q for p, q in targets if (p - end).Length <= tol), None)
+            if near is None:
+                d, pts, _ = min((s.distToShape(Part.Vertex(end)) for s in seams),
+                                key=lambda r: r[0])
+                if not 0.0 < d <= tol:
+                    continue
+                near = pts[0][0]
+                targets.append((end, near))
+            c.setPole(index, near)
+        out.append(c.toShape())
+    return out
 
 
 def _samples(a, b, curves, per_span=8, n=100):
