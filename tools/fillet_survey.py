@@ -137,6 +137,9 @@ def parts():
     fb, edge = shapes.freeform_boss()
     out.append(("free-form boss, its top outline (pieces meet on its side's seam)", fb,
                 [edge], 0.5))
+    cb, bores, rim = shapes.crossing_bores()
+    out.append(("crossing bores r = 3 (tangent where they cross), with a rim", cb,
+                bores + [rim], 0.5))
     pair = Part.makeCompound([b, Part.makeBox(10, 10, 10, V(20, 0, 0))])
     out.append(("compound of two boxes, an edge of each", pair, ["Edge1", "Edge13"], 2.0))
     return out

@@ -573,6 +573,22 @@ def equal_tee():
                and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
 
 
+def crossing_bores():
+    """A 20 x 20 x 20 box bored through by two holes r = 3 along x and y, their axes
+    crossing at the centre (10, 10, 10): the bores meet in two half-ellipses each way
+    (6 edges), tangent to each other at (10, 10, 7) and (10, 10, 13). Returns (solid,
+    names of the 6 bore-to-bore edges, name of the x bore's rim on the face x = 0)."""
+    s = Part.makeBox(20, 20, 20).cut(Part.makeCylinder(3, 40, V(10, -10, 10), V(0, 1, 0))) \
+        .cut(Part.makeCylinder(3, 40, V(-10, 10, 10), V(1, 0, 0)))
+    bores = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if len({f.hashCode() for f in s.ancestorsOfType(e, Part.Face)}) == 2
+             and all(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face))]
+    rim = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if isinstance(e.Curve, Part.Circle) and e.BoundBox.XMax < 1e-9)
+    assert len(bores) == 6, bores
+    return s, bores, rim
+
+
 def nurbs_sphere_through_plate(turn):
     """A sphere r = 5 centred at (0, 0, 7), converted by toNurbs() (a rational B-spline,
     only C0 at its knots: the BOP check flags it) and turned by `turn` degrees about the

@@ -2504,6 +2504,31 @@ def test_a_loop_just_before_a_seam_cuts_once_snapped():
         [face.Area / 16.0, face.Area * 15.0 / 16.0], rel=1e-9)
 
 
+def test_a_rim_meeting_kept_fillets_of_crossing_bores_is_kept_with_its_reason():
+    """Two crossing bores r = 3 in a box: their six edges, with the rim of one bore, at
+    R = 0.5. The bores are tangent where they cross, so their fillets are kept as OCCT's
+    (the faces are parallel there, or the data are too rough). The rim's blend then ends
+    on the bore's face where OCCT's kept fillets meet it: growing that face by a region
+    bounded by its end section made a null face, and the fillet failed with OCCT's
+    "BRepCheck_Analyzer::Init() - NULL shape". Now that blend is kept too, with its
+    reason, and the solid is OCCT's (its volume, to 1e-12). The rim alone is G2."""
+    s, bores, rim = shapes.crossing_bores()
+    solid, rep = C2Blend.fillet_report(s, bores + [rim], 0.5, label="Bored")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"]
+    assert solid.Volume == pytest.approx(
+        s.makeFillet(0.5, [s.getElement(e) for e in bores + [rim]]).Volume, rel=1e-12)
+    reasons = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
+    assert re.fullmatch(r"an end of its blend leaves face Face\d+ of the original solid "
+                        r"away from the face's corners", reasons["Bored." + rim])
+    assert any("the faces are parallel at the contact near (10, 10, " in r
+               for r in reasons.values())
+    solid, rep = C2Blend.fillet_report(s, [rim], 0.5, label="Bored")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid

@@ -489,7 +489,7 @@ def _growth(face, edge, tol):
     (the blend's end section, on that surface outside the face) and two legs from its
     ends to a vertex of the face (the corner), along the curves of the face's edges
     there, extended past them where needed. Returns (region face, corner point, legs),
-    or None when edge does not span such a corner."""
+    or None when edge does not span such a corner or bounds no region with the legs."""
     ends = [v.Point for v in edge.Vertexes]
     if len(ends) != 2:
         return None
@@ -506,8 +506,11 @@ def _growth(face, edge, tol):
     # the nearest such corner: a far one on the same curves spans the face's other end
     # (a boss into a wall: the wall's edge, extended, passes both of the boss's sides)
     _, corner, legs = min(spans, key=lambda c: c[0])
-    region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
-    region.validate()
+    try:  # OCCT makes a null face where the edge and legs bound no region
+        region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
+        region.validate()
+    except Part.OCCError:
+        return None
     uv = [g.Surface.parameter(corner.Point) for g in (region, face)]
     if region.normalAt(*uv[0]).dot(face.normalAt(*uv[1])) < 0:
         region.reverse()  # oriented like face, so the two merge into one
