@@ -2529,6 +2529,23 @@ def test_a_rim_meeting_kept_fillets_of_crossing_bores_is_kept_with_its_reason():
     assert len(rep["blends"]) == 1
 
 
+def test_an_occt_failure_while_assembling_keeps_occts_solid(monkeypatch):
+    """An OCCT exception that assembling does not foresee (here the sewing raising one)
+    does not end the fillet with OCCT's bare message: the blends are kept as OCCT's
+    fillets, each with the message as its reason, and the solid is OCCT's."""
+    def failing(faces):
+        raise Part.OCCError("BRep_API: command not done")
+    monkeypatch.setattr(fl, "_sewn", failing)
+    box = Part.makeBox(10, 10, 10)
+    solid, rep = C2Blend.fillet_report(box, ["Edge1", "Edge3"], 2.0, label="Box")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"]
+    assert solid.Volume == pytest.approx(1000.0 - 2 * (4.0 - math.pi) * 10.0, rel=1e-12)
+    assert [k["reason"] for k in rep["kept_occt_faces"]] == [
+        "OCCT failed while the blends were assembled into the solid (BRep_API: command "
+        "not done)"] * 2
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid

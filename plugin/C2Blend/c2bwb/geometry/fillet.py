@@ -26,8 +26,8 @@ of the fillets kept there (corners.py), measured and reported, never claimed G2.
 OCCT made them, and reported as such with the reason (no G2 claim is made there): chains
 whose side changes face where no blend is G2 to both faces, and chains whose exact
 contact, blend, fit, cut or end face's growth cannot be built or whose blend overshoots
-its faces (NotReplaced, ends.trim, Unassembled), with the fillets that meet them in a
-mitre, and the corner patches where every fillet is kept.
+its faces (NotReplaced, ends.trim, Unassembled; all of them where OCCT raises an error
+while they are assembled), with the fillets that meet them in a mitre, and the corner patches where every fillet is kept.
 """
 import math
 import numbers
@@ -1495,6 +1495,9 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                 break
             except Unassembled as ex:
                 failed = [(b, str(ex)) for b in ex.blends]
+            except Part.OCCError as ex:  # not foreseen: OCCT's solid stands, and says why
+                failed = [(b, "OCCT failed while the blends were assembled into the solid "
+                           "(%s)" % occt_message(ex)) for b in blended]
         drop = []
         for b, reason in failed:
             if not any(b is x for x in drop):  # with the other runs of its chain, once
