@@ -27,7 +27,8 @@ OCCT made them, and reported as such with the reason (no G2 claim is made there)
 whose side changes face where no blend is G2 to both faces, and chains whose exact
 contact, blend, fit, cut or end face's growth cannot be built or whose blend overshoots
 its faces (NotReplaced, ends.trim, Unassembled; all of them where OCCT raises an error
-while they are assembled), with the fillets that meet them in a mitre, and the corner patches where every fillet is kept.
+while they are assembled), with the fillets that meet them in a mitre, and the corner
+patches where every fillet is kept.
 """
 import math
 import numbers
