@@ -135,8 +135,9 @@ def parts():
                 edges[3:], 0.8))
     out.append(("stepped shaft, its five circles", st, edges, 0.8))
     fb, edge = shapes.freeform_boss()
-    out.append(("free-form boss, its top outline (pieces meet on its side's seam)", fb,
-                [edge], 0.5))
+    for r in (0.5, 0.8):
+        out.append(("free-form boss, its top outline (pieces meet on its side's seam)", fb,
+                    [edge], r))
     cb, bores, rim = shapes.crossing_bores()
     out.append(("crossing bores r = 3 (tangent where they cross), with a rim", cb,
                 bores + [rim], 0.5))

@@ -240,11 +240,12 @@ class Blended:
 
 
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
-               max_samples, fillet_faces, target=DATA_REL):
+               max_samples, fillet_faces, target=DATA_REL, smooth=False):
     """The PDE blend replacing one rolling-ball chain or run (see bspline.solve_sampled),
     from the exact contact of the ball of `radius`, traced past the ends that are
-    trimmed (ends.py), its data sampled to `target` (relative). Raises NotReplaced
-    saying why it cannot."""
+    trimmed (ends.py), its data sampled to `target` (relative); smooth: the contact
+    crosses no knot line or edge of its faces, so its data are analytic. Raises
+    NotReplaced saying why it cannot."""
     nrows = ROWS[continuity]
     at_ends = ends.chain_ends(chain, fillet_faces, radius)
     try:
@@ -254,7 +255,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
             lambda k: sample_rows(chain, contact, k, nrows, tension, where),
             lambda r0, r1: spec_from_rows(r0, r1, continuity, shape_params, chain.closed,
                                           "fillet " + where),
-            where, samples, max_samples, target, DATA_KEEP)
+            where, samples, max_samples, target, DATA_KEEP, smooth)
     except ContactError as ex:
         raise NotReplaced(str(ex)) from None
     if err > DATA_KEEP:
@@ -305,14 +306,14 @@ def solve_chain(chain, radius, where, continuity, shape_params, tension, tol_rel
             raise
         try:
             return solve_runs(runs, chain.closed, radius, where, continuity, tension,
-                              tol_rel, samples, max_samples, fillet_faces)
+                              tol_rel, samples, max_samples, fillet_faces, smooth=True)
         except NotReplaced as ex:
             raise NotReplaced("%s; cut into %d pieces where the contact crosses knot lines "
                               "of its faces, %s" % (rough, len(runs), ex)) from None
 
 
 def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, samples,
-               max_samples, fillet_faces):
+               max_samples, fillet_faces, smooth=False):
     """The blends of a chain's runs (rollingball.Run), one per run: where the side changes
     face or the contact crosses a knot line of a face. The boundary data there are only
     C1 or C2 along the chain (a face's curvature, or its derivative, jumps), which no
@@ -326,8 +327,9 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
     runs at a junction where their blends meet at a crease are sampled again to the
     lower targets of JUNCTION_DATA_REL; a crease left (a knot line crossed obliquely)
     is accepted up to JUNCTION_TURN, and the report measures it. closed: the last run
-    meets the first. Returns [Blended], each with group set. Raises NotReplaced saying
-    why the chain cannot be replaced."""
+    meets the first. smooth: the runs are cut at every knot line the contact crosses
+    (knots.split_at_knots), so that each one's data are analytic. Returns [Blended],
+    each with group set. Raises NotReplaced saying why the chain cannot be replaced."""
     shape = pointwise_shape(continuity)
     try:
         runs = at_face_changes(runs, closed, radius)
@@ -336,7 +338,7 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
 
     def solved(run, target=DATA_REL, start=samples):
         return solve_face(run, radius, where, continuity, shape, tension, tol_rel, start,
-                          max_samples, fillet_faces, target)
+                          max_samples, fillet_faces, target, smooth)
 
     blends = [solved(r) for r in runs]
     pairs = list(zip(range(len(runs)), list(range(1, len(runs))) + ([0] if closed else [])))
