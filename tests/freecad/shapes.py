@@ -582,7 +582,8 @@ def crossing_bores():
         .cut(Part.makeCylinder(3, 40, V(-10, 10, 10), V(1, 0, 0)))
     bores = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
              if len({f.hashCode() for f in s.ancestorsOfType(e, Part.Face)}) == 2
-             and all(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face))]
+             and all(isinstance(f.Surface, Part.Cylinder)
+                     for f in s.ancestorsOfType(e, Part.Face))]
     rim = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
                if isinstance(e.Curve, Part.Circle) and e.BoundBox.XMax < 1e-9)
     assert len(bores) == 6, bores

@@ -2478,16 +2478,26 @@ def test_a_rim_crossing_its_faces_seam_at_a_junction_is_g2():
     made: G2, valid, passing the BOP check. The side face is vertical, so what is left
     of it is its outline's perimeter (its area / 8) times the contact's height, 8 - R,
     and ends there."""
+    rep, left = _boss_rim(0.5)
+    assert_g2(rep)
+    assert max(f.BoundBox.ZMax for f in left) == pytest.approx(7.5, abs=1e-9)
+
+
+def _boss_rim(radius):
+    """The free-form boss's top outline filleted at radius: its report, after checking
+    that it has 12 blends, none kept, a valid solid passing the BOP check, and what is
+    left of the vertical side its perimeter (its area / 8) times 8 - radius; and those
+    side faces."""
     s, edge = shapes.freeform_boss()
     side = next(f for f in s.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion))
-    solid, rep = C2Blend.fillet_report(s, [edge], 0.5, label="Boss")
+    solid, rep = C2Blend.fillet_report(s, [edge], radius, label="Boss")
     assert not rep["kept_occt_faces"] and len(rep["blends"]) == 12
     assert_valid(solid)
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
-    assert_g2(rep)
     left = [f for f in solid.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion)]
-    assert sum(f.Area for f in left) == pytest.approx(side.Area / 8.0 * 7.5, rel=1e-9)
-    assert max(f.BoundBox.ZMax for f in left) == pytest.approx(7.5, abs=1e-9)
+    assert sum(f.Area for f in left) == pytest.approx(side.Area / 8.0 * (8.0 - radius),
+                                                      rel=1e-9)
+    return rep, left
 
 
 def test_a_rim_whose_piece_resolves_late_is_g2():
@@ -2499,18 +2509,11 @@ def test_a_rim_whose_piece_resolves_late_is_g2():
     but the one on the side's seam, where the side face's own curvature jumps (FreeCAD
     0.20's periodic interpolation: a double knot), which the report names. What is left
     of the side is its perimeter times 8 - R, as at R = 0.5."""
-    s, edge = shapes.freeform_boss()
-    side = next(f for f in s.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion))
-    solid, rep = C2Blend.fillet_report(s, [edge], 0.8, label="Boss")
-    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 12
-    assert_valid(solid)
-    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    rep, _ = _boss_rim(0.8)
     assert all(t["verdict"] == "G2" for t in rep["trimlines"])
     creased = [j for j in rep["junctions"] if j["verdict"] != "G2"]
     assert len(creased) == 1 and creased[0]["side_curvature_jump"] > 0.5
     assert creased[0]["g0"] < ck.TOL_G0
-    left = [f for f in solid.Faces if isinstance(f.Surface, Part.SurfaceOfExtrusion)]
-    assert sum(f.Area for f in left) == pytest.approx(side.Area / 8.0 * 7.2, rel=1e-9)
 
 
 def test_a_loop_just_before_a_seam_cuts_once_snapped():

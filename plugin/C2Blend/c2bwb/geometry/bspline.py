@@ -70,14 +70,15 @@ def solve_sampled(rows_at, spec_of, where, samples, max_samples, target, hopeles
     """Sample boundary rows (rows_at(n) -> (rows0, rows1)), doubling n from `samples`
     until the kernel's measured data error is below `target`, stops improving (less
     than 2x on each of two doublings in a row: one slow doubling can be the start of
-    algebraic convergence, as where a face's seam is only G2; not so for `smooth` data,
-    analytic by construction, whose error may stay flat until the samples resolve
-    their finest feature: a piece of a free-form boss's rim at R = 0.8, between knot
-    lines, measured 1.6e-2, 2.0e-2 and 1.9e-2 with 32 to 128 samples, then 3.6e-4,
-    4.4e-7 and 8.5e-9 up to 1024), or n reaches max_samples. It also stops where convergence is algebraic (the gain per doubling no
+    algebraic convergence, as where a face's seam is only G2), or n reaches
+    max_samples. It also stops where convergence is algebraic (the gain per doubling no
     longer grows, as where data that are not smooth cross a spline's knot) and, at the
-    last gain, the error would still be above `hopeless` at max_samples. Returns
-    (blend, n, error) of the smallest error found."""
+    last gain, the error would still be above `hopeless` at max_samples. `smooth` data,
+    analytic by construction, are not taken to stop improving: their error may stay
+    flat until the samples resolve their finest feature (a piece of a free-form boss's
+    rim at R = 0.8, between knot lines, measured 1.6e-2, 2.0e-2 and 1.9e-2 with 32 to
+    128 samples, then 3.6e-4, 4.4e-7 and 8.5e-9 up to 1024). Returns (blend, n, error)
+    of the smallest error found."""
     n, errs, best = samples, [], None
     while True:
         rows0, rows1 = rows_at(n)
