@@ -141,6 +141,9 @@ def parts():
     cb, bores, rim = shapes.crossing_bores()
     out.append(("crossing bores r = 3 (tangent where they cross), with a rim", cb,
                 bores + [rim], 0.5))
+    sc, corners = shapes.square_to_circle_loft()
+    out.append(("square-to-circle loft, its corner lines (tangent at the circle)", sc,
+                corners, 0.5))
     pair = Part.makeCompound([b, Part.makeBox(10, 10, 10, V(20, 0, 0))])
     out.append(("compound of two boxes, an edge of each", pair, ["Edge1", "Edge13"], 2.0))
     return out

@@ -590,6 +590,20 @@ def crossing_bores():
     return s, bores, rim
 
 
+def square_to_circle_loft():
+    """A ruled loft from a 10 x 10 square at z = 0 to a circle r = 4 at z = 12: four
+    B-spline faces, meeting at an angle along the square's corner lines and tangent
+    where those lines reach the circle (at 45, 135, 225 and 315 degrees; a fifth
+    edge, tangent all along, runs to the circle's seam). Returns (solid, names of the
+    four corner lines)."""
+    square = Part.makePolygon([V(-5, -5, 0), V(5, -5, 0), V(5, 5, 0), V(-5, 5, 0),
+                               V(-5, -5, 0)])
+    s = Part.makeLoft([square, Part.Wire(Part.makeCircle(4, V(0, 0, 12)))], True, True)
+    top = [max(e.Vertexes, key=lambda v: v.Point.z).Point for e in s.Edges]
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if e.BoundBox.ZLength > 11 and abs(abs(top[i].x) - abs(top[i].y)) < 1e-6]
+
+
 def nurbs_sphere_through_plate(turn):
     """A sphere r = 5 centred at (0, 0, 7), converted by toNurbs() (a rational B-spline,
     only C0 at its knots: the BOP check flags it) and turned by `turn` degrees about the

@@ -2577,6 +2577,31 @@ def test_an_occt_failure_while_assembling_keeps_occts_solid(monkeypatch):
         "not done)"] * 2
 
 
+def test_edges_running_into_a_tangent_joint_say_so():
+    """The four side edges of a ruled loft from a square to a circle, at R = 0.5: the
+    faces along each meet at 90 degrees at the square and tangent at the circle, where
+    the exact contact's Newton iteration fails, and OCCT's fillets are kept. Each reason
+    says where (a point of the circle r = 4 at z = 12, to the 6 digits printed) and that
+    the faces are within a degree of tangent there."""
+    s, edges = shapes.square_to_circle_loft()
+    assert len(edges) == 4
+    solid, rep = C2Blend.fillet_report(s, edges, 0.5, label="Loft")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"] and len(rep["kept_occt_faces"]) == 4
+    assert solid.Volume == pytest.approx(
+        s.makeFillet(0.5, [s.getElement(e) for e in edges]).Volume, rel=1e-12)
+    for k in rep["kept_occt_faces"]:
+        m = re.fullmatch(r"Newton's method for the exact rolling-ball contact did not "
+                         r"converge near \(([-.\d]+), ([-.\d]+), ([-.\d]+)\), where the "
+                         r"faces are within ([-.\de]+) degrees of tangent: there a ball "
+                         r"touching both has no single contact, and no blend runs up to "
+                         r"the tangent joint", k["reason"])
+        assert m, k["reason"]
+        x, y, z, turn = (float(g) for g in m.groups())
+        assert math.hypot(x, y) == pytest.approx(4.0, abs=1e-5)
+        assert z == pytest.approx(12.0, abs=1e-5) and 0.0 <= turn < 1.0
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid

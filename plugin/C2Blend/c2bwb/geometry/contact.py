@@ -27,11 +27,12 @@ of a chain) its plane turns and the centre jumps along the spine; the spans are 
 by the measured jump, so the samples stay uniform on the spine itself.
 """
 import bisect
+import math
 
 import numpy as np
 
 from .rollingball import Section
-from .surface import Frame
+from .surface import Frame, angle
 
 MAX_NEWTON = 30
 NEWTON_DONE = 1e-10  # relative step after which one more Newton step is below rounding
@@ -42,6 +43,7 @@ QUAD_REL = 1e-12  # a subinterval is halved until its halves' integrals sum to i
 MAX_HALVINGS = 12  # ... at most this many times
 SIMPSON = 1e-2  # a Newton step for a given arc length this short (relative to its
 # Gauss subinterval) is integrated by Simpson's rule (at_length)
+TANGENT = math.radians(1.0)  # faces closer than this to tangent: a reason Newton fails
 WARM = 0.05  # start Newton from the last solution within this fraction of the section
 
 # 5-point Gauss-Legendre nodes and weights on [0, 1]
@@ -168,6 +170,7 @@ class Contact:
         tangent oriented like t0."""
         if self.signs is None:
             self.signs = self._signs(x)
+        start = x
         g1, g2 = self.signs
         for _ in range(MAX_NEWTON):
             p1, s1u, s1v, n1, n1u, n1v = _normal_frame(self.f1, x[0], x[1], self.s1)
@@ -187,7 +190,8 @@ class Contact:
                 break  # quadratic convergence: the error left is ~ step^2
         else:
             raise ContactError("Newton's method for the exact rolling-ball contact did not "
-                               "converge near (%.6g, %.6g, %.6g)" % (m.x, m.y, m.z))
+                               "converge near (%.6g, %.6g, %.6g)%s"
+                               % (m.x, m.y, m.z, self._tangent_words(start)))
         p1, _, _, n1, _, _ = _normal_frame(self.f1, x[0], x[1], self.s1)
         p2 = self.s2.value(x[2], x[3])
         c = p1 + n1 * g1
@@ -197,6 +201,22 @@ class Contact:
                                % (c.x, c.y, c.z))
         t.normalize()
         return p1, p2, c, (-t if t.dot(t0) < 0.0 else t), x
+
+    def _tangent_words(self, x):
+        """Why Newton's method may fail at contact parameters x (OCCT's contact, or a
+        solution nearby): ", where the faces are within A degrees of tangent, ..." when
+        their normals there differ by less than TANGENT, else ""."""
+        try:
+            n1 = _normal_frame(self.f1, x[0], x[1], self.s1)[3]
+            n2 = _normal_frame(self.f2, x[2], x[3], self.s2)[3]
+        except ContactError:
+            return ""
+        turn = angle(n1, n2)
+        if turn >= TANGENT:
+            return ""
+        return (", where the faces are within %.2g degrees of tangent: there a ball "
+                "touching both has no single contact, and no blend runs up to the tangent "
+                "joint" % math.degrees(turn))
 
     def _integral(self, k, a0, a1):
         """Spine arc length from guide parameter a0 to a1 in section k (Gauss)."""
