@@ -591,11 +591,11 @@ def crossing_bores():
 
 
 def square_to_circle_loft():
-    """A ruled loft from a 10 x 10 square at z = 0 to a circle r = 4 at z = 12: four
-    B-spline faces, meeting at an angle along the square's corner lines and tangent
-    where those lines reach the circle (at 45, 135, 225 and 315 degrees; a fifth
-    edge, tangent all along, runs to the circle's seam). Returns (solid, names of the
-    four corner lines)."""
+    """A ruled loft from a 10 x 10 square at z = 0 to a circle r = 4 at z = 12: its
+    B-spline faces meet at an angle along the square's corner lines, tangent where
+    those lines reach the circle (at 45, 135, 225 and 315 degrees); a fifth edge,
+    tangent all along, runs to the circle's seam and splits one side in two. Returns
+    (solid, names of the four corner lines)."""
     square = Part.makePolygon([V(-5, -5, 0), V(5, -5, 0), V(5, 5, 0), V(-5, 5, 0),
                                V(-5, -5, 0)])
     s = Part.makeLoft([square, Part.Wire(Part.makeCircle(4, V(0, 0, 12)))], True, True)
