@@ -2602,6 +2602,28 @@ def test_edges_running_into_a_tangent_joint_say_so():
         assert z == pytest.approx(12.0, abs=1e-5) and 0.0 <= turn < 1.0
 
 
+def test_a_face_winding_round_a_seam_is_not_taken_for_a_fillet():
+    """OCCT's fillet of a helical ridge's junction with its cylinder (R = 0.3): what is
+    left of the cylinder's face winds round its seam three times. OCCT's domain test
+    passed grid points off that face, 0.18 to 0.7 from it, so it was taken for a new
+    (fillet) face, and the two fillets next to it were kept as having one contact edge.
+    The new faces are now the two fillets only, and every interior point of the
+    cylinder's face lies on it."""
+    from c2bwb.geometry import rollingball as rb
+    s, edges = shapes.helical_ridge()
+    assert len(edges) == 6
+    s = s.copy()  # OCCT's fillet of these edges fails on the fused solid itself
+    result = s.makeFillet(0.3, [s.getElement(e) for e in edges])
+    new = rb.new_faces(s, result)
+    assert sorted(type(f.Surface).__name__ for f in new) == ["BSplineSurface"] * 2
+    cylinder = [f for f in result.Faces if isinstance(f.Surface, Part.Cylinder)]
+    assert len(cylinder) == 1
+    points = rb.interior_points(cylinder[0])
+    assert points
+    for p in points:
+        assert cylinder[0].distToShape(Part.Vertex(p))[0] < 1e-9
+
+
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
     """Without the restarted trimline (fl._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid
