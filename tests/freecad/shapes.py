@@ -604,15 +604,15 @@ def square_to_circle_loft():
                if e.BoundBox.ZLength > 11 and abs(abs(top[i].x) - abs(top[i].y)) < 1e-6]
 
 
-def helical_ridge():
-    """A circle r = 0.8 swept along a helix (radius 10, pitch 4, 12 high) and fused with a
-    cylinder r = 10, 12 high: a ridge half sunk in it, its B-spline face meeting the
-    cylinder along helical edges that wind round the cylinder's seam. Returns (solid,
-    names of those junction edges)."""
-    helix = Part.Wire(Part.makeHelix(4, 12, 10))
+def helical_ridge(turns=3):
+    """A circle r = 0.8 swept along a helix (radius 10, pitch 4, `turns` turns) and fused
+    with a cylinder r = 10 as high: a ridge half sunk in it, its B-spline face meeting
+    the cylinder along helical edges that wind round the cylinder's seam. Returns
+    (solid, names of those junction edges)."""
+    helix = Part.Wire(Part.makeHelix(4, 4 * turns, 10))
     ridge = helix.makePipeShell([Part.Wire(Part.makeCircle(0.8, V(10, 0, 0), V(0, 1, 0)))],
                                 True, True)
-    s = Part.makeCylinder(10, 12).fuse(ridge).removeSplitter()
+    s = Part.makeCylinder(10, 4 * turns).fuse(ridge).removeSplitter()
     kinds = [{type(f.Surface) for f in s.ancestorsOfType(e, Part.Face)} for e in s.Edges]
     return s, ["Edge%d" % (i + 1) for i, k in enumerate(kinds)
                if k == {Part.Cylinder, Part.BSplineSurface}]

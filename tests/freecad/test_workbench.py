@@ -2602,14 +2602,22 @@ def test_edges_running_into_a_tangent_joint_say_so():
         assert z == pytest.approx(12.0, abs=1e-5) and 0.0 <= turn < 1.0
 
 
+def _off_ridge(p):
+    """Height of point p above or below the nearest turn of shapes.helical_ridge's
+    centre line (z = 4 theta / 2 pi, theta from 0 to 6 pi), along the cylinder's axis:
+    its ridge covers the cylinder where this is within 0.8."""
+    theta = math.atan2(p.y, p.x) % (2 * math.pi)
+    return min(abs(p.z - 4.0 * (theta / (2 * math.pi) + k)) for k in range(-1, 4))
+
+
 def test_a_face_winding_round_a_seam_is_not_taken_for_a_fillet():
     """OCCT's fillet of a helical ridge's junction with its cylinder (R = 0.3): what is
-    left of the cylinder's face winds round its seam three times. OCCT's domain test
-    passed grid points off that face, 0.18 to 0.7 from it, so it was taken for a new
-    (fillet) face, and the two fillets next to it were kept as having one contact edge.
-    The new faces are now the two fillets only, and every interior point of the
-    cylinder's face lies on it."""
-    from c2bwb.geometry import rollingball as rb
+    left of the cylinder's face winds round its seam three times. OCCT's distance
+    (distToShape) put points of that face 0.18 to 1.2 away from the cylinder's face of
+    the original solid, so the face was taken for a new (fillet) face, and the two
+    fillets next to it were kept as having one contact edge. The new faces are now the
+    two fillets only; the cylinder's interior points lie on the cylinder, 0.8 + 0.3 or
+    more off the ridge's centre line (the ridge and its fillets lie within that)."""
     s, edges = shapes.helical_ridge()
     assert len(edges) == 6
     s = s.copy()  # OCCT's fillet of these edges fails on the fused solid itself
@@ -2619,9 +2627,67 @@ def test_a_face_winding_round_a_seam_is_not_taken_for_a_fillet():
     cylinder = [f for f in result.Faces if isinstance(f.Surface, Part.Cylinder)]
     assert len(cylinder) == 1
     points = rb.interior_points(cylinder[0])
-    assert points
+    assert len(points) >= 8
     for p in points:
-        assert cylinder[0].distToShape(Part.Vertex(p))[0] < 1e-9
+        assert math.hypot(p.x, p.y) == pytest.approx(10.0, abs=1e-9)
+        assert _off_ridge(p) > 1.1
+
+
+def test_distance_to_a_face_winding_round_its_seam():
+    """surface.face_distance on the cylinder's face of the helical ridge (its pcurves
+    span 3.6 periods): points on the cylinder midway between the ridge's turns lie on
+    the face, where OCCT's distance puts most of them 1.2 away; points on the ridge's
+    centre line lie 0.8 from the face (the ridge's half-width, at its edges), by both."""
+    from c2bwb.geometry.surface import face_distance
+    s, _ = shapes.helical_ridge()
+    face = next(f for f in s.Faces if isinstance(f.Surface, Part.Cylinder))
+    occt_missed = 0
+    for k in range(24):
+        t = 2 * math.pi * k / 24
+        mid = V(10 * math.cos(t), 10 * math.sin(t), 4 * (t / (2 * math.pi) + 1) + 2)
+        assert _off_ridge(mid) == pytest.approx(2.0)
+        assert face_distance(face, mid) < 1e-9
+        occt_missed += face.distToShape(Part.Vertex(mid))[0] > 1.0
+        centre = V(mid.x, mid.y, mid.z - 2)
+        assert face_distance(face, centre) == pytest.approx(0.8, abs=2e-3)
+    assert occt_missed >= 12  # what face_distance is for
+
+
+def test_a_cut_whose_pieces_overlap_says_so():
+    """OCCT's general fuse cuts the 3-turn helical ridge's cylinder face (its domain
+    spans 3.6 periods) along a helix midway between the ridge's turns into pieces
+    whose areas add up to more than the face's; fl._fused refuses them and says so."""
+    s, _ = shapes.helical_ridge()
+    face = next(f for f in s.Faces if isinstance(f.Surface, Part.Cylinder))
+    helix = Part.makeHelix(4, 16, 10)
+    helix.translate(V(0, 0, -2))  # z = 4 theta / 2 pi - 2: midway between the turns
+    m = re.fullmatch(r"OCCT's general fuse cut the face into pieces whose areas add up to "
+                     r"([0-9.]+), more than its ([0-9.]+), as where the face winds round "
+                     r"its surface's seam", fl._fused(face, helix.Edges, 1e-7))
+    assert m and float(m.group(1)) > 1.1 * float(m.group(2)) and \
+        float(m.group(2)) == pytest.approx(face.Area, rel=1e-5)
+
+
+def test_a_one_turn_helical_ridge_is_g2():
+    """A helical ridge of one turn on a cylinder, filleted at R = 0.3 on both sides: what
+    is left of the cylinder's face spans 1.6 periods of its surface, where OCCT's
+    distance put the trimlines off it; the top face grows by a sliver 4.1 long at
+    each fillet's end (the fillet meets the plane at 3.6 degrees), where OCCT's area of
+    the grown face is off by 2.7e-3. Both blends are G2 and the solid is valid. The
+    fillets add material, less than OCCT's: a G2 blend leaves its faces with their
+    curvature, so it runs between the rolling ball's arc and the corner (as on the
+    box's convex edge it removes less), and less than a 90-degree corner's fillets
+    between planes would over the junction edges' length."""
+    s, edges = shapes.helical_ridge(1)
+    assert len(edges) == 2
+    solid, rep = C2Blend.fillet_report(s.copy(), edges, 0.3, label="Ridge")
+    assert_valid(solid)
+    assert not rep["kept_occt_faces"], rep["kept_occt_faces"]
+    assert len(rep["blends"]) == 2 and rep["verdict"] == "G2"
+    assert_g2(rep)
+    assert s.Volume < solid.Volume < rep["occt_volume"]
+    length = sum(s.getElement(e).Length for e in edges)
+    assert solid.Volume - s.Volume < (1 - math.pi / 4) * 0.3 ** 2 * length
 
 
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):

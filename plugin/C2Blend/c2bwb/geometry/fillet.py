@@ -48,7 +48,7 @@ from . import solids as sl
 from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
-from .surface import Frame, angle, frame_at_point, off_surface, project
+from .surface import Frame, angle, face_distance, frame_at_point, off_surface, project
 from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -442,7 +442,7 @@ def overshoot(surface, sides, signs):
 
 def _on_face(face, p, tol):
     """True when point p lies on face (within tol)."""
-    return face.distToShape(Part.Vertex(p))[0] <= tol
+    return face_distance(face, p) <= tol
 
 
 def _probe(face):
@@ -469,8 +469,7 @@ def _original(shape, face):
     p = _probe(face)
     tol = 1e-7 * shape.BoundBox.DiagonalLength
     on = [g for g in shape.Faces if off_surface(g.Surface, p) <= tol] or shape.Faces
-    probe = Part.Vertex(p)
-    return min(on, key=lambda g: g.distToShape(probe)[0])
+    return min(on, key=lambda g: face_distance(g, p))
 
 
 def _leg(curve, p, corner, tol):
@@ -603,7 +602,13 @@ def _grown(face, section, whole, corner, region, tol):
     # new edges' curves on the surface.
     out = face.replaceShape(swap)
     out.validate()
-    if abs(out.Area - area - region.Area) > 1e-6 * (area + region.Area):
+    miss = abs(out.Area - area - region.Area)
+    # OCCT's area is off by up to 9e-6 (relative) on a face with long B-spline edges (a
+    # helical ridge's section by a cylinder's end plane: 2.7e-3 of 307 once grown, by
+    # Green's theorem); there the grown face holds a point inside the region, and its
+    # area misses by less than half the region's
+    if miss > 1e-6 * (area + region.Area) and (
+            miss > 0.5 * region.Area or not _on_face(out, _probe(region), tol)):
         raise ValueError("the grown face's area %.9g is not the face's %.9g plus the "
                          "region's %.9g" % (out.Area, area, region.Area))
     return out
@@ -680,9 +685,13 @@ def _fused(face, tools, tol):
     except Exception as ex:  # FreeCAD's Part and OCCT errors come in several classes
         return occt_message(ex)
     area = sum(f.Area for f in pieces)
-    if abs(area - face.Area) > 1e-3 * face.Area:
+    if area < (1.0 - 1e-3) * face.Area:
         return ("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
                 "trimline crosses the face's seam" % (area, face.Area))
+    if area > (1.0 + 1e-3) * face.Area:
+        return ("OCCT's general fuse cut the face into pieces whose areas add up to "
+                "%.6g, more than its %.6g, as where the face winds round its surface's "
+                "seam" % (area, face.Area))
     return pieces
 
 
@@ -719,10 +728,12 @@ def _snapped_to_seams(tools, face, tol):
     moved by its end poles, which moves the curve by no more than its ends move; other
     edges are kept as they are."""
     seams = [e for e in face.Edges if e.isSeam(face)]
+    if not seams:
+        return list(tools)
     targets = []  # (end, its point on a seam)
     out = []
     for e in tools:
-        if not seams or e.isClosed() or not isinstance(e.Curve, Part.BSplineCurve):
+        if e.isClosed() or not isinstance(e.Curve, Part.BSplineCurve):
             out.append(e)
             continue
         c = e.Curve.copy()

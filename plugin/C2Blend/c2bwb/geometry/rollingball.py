@@ -11,7 +11,7 @@ contact.py traces the exact contact along a chain, with its faces as the guide.
 """
 import Part
 
-from .surface import frame_at_point, angle
+from .surface import angle, face_distance, frame_at_point
 
 TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
 
@@ -19,10 +19,7 @@ TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
 def interior_points(face, n=4):
     """Points of the face on an n x n grid of its parameter range, inside its domain and
     off its boundary (a regular hexagon's centre row of the grid runs through two of its
-    vertices: such a point also lies on the neighbouring faces), and on the face: OCCT's
-    domain test accepts points off a face whose boundaries wind around its surface's
-    seam (a cylinder's face between the fillets of a helical ridge: 7 of 8 points lay
-    0.18 to 0.7 off it, and the face was taken for a fillet)."""
+    vertices: such a point also lies on the neighbouring faces)."""
     u0, u1, v0, v1 = face.ParameterRange
     boundary = Part.Compound(face.Edges)
     tol = 1e-6 * face.BoundBox.DiagonalLength
@@ -33,7 +30,7 @@ def interior_points(face, n=4):
             v = v0 + (v1 - v0) * (j - 0.5) / n
             if face.isPartOfDomain(u, v):
                 p = Part.Vertex(face.Surface.value(u, v))
-                if boundary.distToShape(p)[0] > tol and face.distToShape(p)[0] <= tol:
+                if boundary.distToShape(p)[0] > tol:
                     out.append(p.Point)
     return out
 
@@ -46,14 +43,19 @@ def off_boundary(face):
 
 def new_faces(original, result):
     """Faces of `result` that do not lie on the boundary of `original` (the fillets):
-    some interior point is farther than off_boundary from every original face."""
+    some interior point is farther than off_boundary from every original face (by
+    OCCT's distance, then, where that is farther, by face_distance: a face winding
+    round its surface's seam, as a cylinder's between the turns of a helical ridge,
+    lies on an original face that OCCT puts away from most of it)."""
     boundary = Part.Compound(original.Faces)
     out = []
     for f in result.Faces:
         if any(f.isSame(g) for g in original.Faces):
             continue
         tol = off_boundary(f)
-        if any(boundary.distToShape(Part.Vertex(p))[0] > tol for p in interior_points(f)):
+        if any(boundary.distToShape(Part.Vertex(p))[0] > tol
+               and all(face_distance(g, p) > tol for g in original.Faces)
+               for p in interior_points(f)):
             out.append(f)
     return out
 

@@ -9,6 +9,7 @@ import math
 import numpy
 
 import FreeCAD
+import Part
 
 Vector = FreeCAD.Vector
 
@@ -140,6 +141,34 @@ def off_surface(surface, p, guess=None):
     """Distance from point p to its orthogonal projection onto surface (see project for
     the guess)."""
     return (surface.value(*project(surface, p, guess)) - p).Length
+
+
+def face_distance(face, p):
+    """Distance (model units) from point p to face. OCCT's (distToShape) classifies
+    the projection of p within one period of a periodic surface, so it misses the
+    parts of a face whose domain spans more than a period, its boundary winding round
+    the surface's seam: a cylinder's face between the turns of a helical ridge, whose
+    pcurves span 3.6 periods, was put 1.2 away from points lying on it. The face's
+    domain test (isPartOfDomain) follows the pcurves round the seam: on such a face,
+    where it holds the projection of p onto the surface, that projection's distance is
+    taken, when shorter. (Given another kind of shape, as an edge, OCCT's distance.)"""
+    d = face.distToShape(Part.Vertex(p))[0]
+    if d == 0.0 or not isinstance(face, Part.Face) or not _winds(face):
+        return d
+    s = face.Surface
+    try:
+        u, v = s.parameter(p)
+    except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
+        return d
+    return min(d, (s.value(u, v) - p).Length) if face.isPartOfDomain(u, v) else d
+
+
+def _winds(face):
+    """True when face's domain spans more than one period of its surface."""
+    s = face.Surface
+    u0, u1, v0, v1 = face.ParameterRange
+    return (s.isUPeriodic() and u1 - u0 > s.UPeriod() * (1.0 + 1e-9)) or \
+        (s.isVPeriodic() and v1 - v0 > s.VPeriod() * (1.0 + 1e-9))
 
 
 def frame_or_none(face, u, v):
