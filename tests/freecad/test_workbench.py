@@ -2613,10 +2613,10 @@ def _off_ridge(p):
 def test_a_face_winding_round_a_seam_is_not_taken_for_a_fillet():
     """OCCT's fillet of a helical ridge's junction with its cylinder (R = 0.3): what is
     left of the cylinder's face winds round its seam three times. OCCT's distance
-    (distToShape) put points of that face 0.18 to 1.2 away from the cylinder's face of
-    the original solid, so the face was taken for a new (fillet) face, and the two
-    fillets next to it were kept as having one contact edge. The new faces are now the
-    two fillets only; the cylinder's interior points lie on the cylinder, 0.8 + 0.3 or
+    (distToShape) put 7 of its 8 interior points 0.43 to 0.96 away from the
+    cylinder's face of the original solid, so the face was taken for a new (fillet)
+    face, and the two fillets next to it were kept as having one contact edge. The new
+    faces are now the two fillets only; the cylinder's interior points lie on the cylinder, 0.8 + 0.3 or
     more off the ridge's centre line (the ridge and its fillets lie within that)."""
     s, edges = shapes.helical_ridge()
     assert len(edges) == 6
