@@ -11,7 +11,7 @@ contact.py traces the exact contact along a chain, with its faces as the guide.
 """
 import Part
 
-from .surface import angle, face_distance, frame_at_point
+from .surface import angle, domain_distance, frame_at_point, winds
 
 TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
 
@@ -44,17 +44,18 @@ def off_boundary(face):
 def new_faces(original, result):
     """Faces of `result` that do not lie on the boundary of `original` (the fillets):
     some interior point is farther than off_boundary from every original face (by
-    OCCT's distance, then, where that is farther, by face_distance: a face winding
-    round its surface's seam, as a cylinder's between the turns of a helical ridge,
-    lies on an original face that OCCT puts away from most of it)."""
+    OCCT's distance, then, where that is farther, by domain_distance from the original
+    faces that wind round their surface's seam: see face_distance, OCCT puts a
+    cylinder's face between the turns of a helical ridge away from most of it)."""
     boundary = Part.Compound(original.Faces)
+    winding = [g for g in original.Faces if winds(g)]
     out = []
     for f in result.Faces:
         if any(f.isSame(g) for g in original.Faces):
             continue
         tol = off_boundary(f)
         if any(boundary.distToShape(Part.Vertex(p))[0] > tol
-               and all(face_distance(g, p) > tol for g in original.Faces)
+               and all(domain_distance(g, p) > tol for g in winding)
                for p in interior_points(f)):
             out.append(f)
     return out

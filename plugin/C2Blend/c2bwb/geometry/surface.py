@@ -148,22 +148,28 @@ def face_distance(face, p):
     the projection of p within one period of a periodic surface, so it misses the
     parts of a face whose domain spans more than a period, its boundary winding round
     the surface's seam: a cylinder's face between the turns of a helical ridge, whose
-    pcurves span 3.6 periods, was put 1.2 away from points lying on it. The face's
-    domain test (isPartOfDomain) follows the pcurves round the seam: on such a face,
-    where it holds the projection of p onto the surface, that projection's distance is
-    taken, when shorter. (Given another kind of shape, as an edge, OCCT's distance.)"""
+    pcurves span 3.6 periods, was put 1.2 away from points lying on it. On such a face
+    (winds), domain_distance is taken when shorter. (Given another kind of shape, as
+    an edge, OCCT's distance.)"""
     d = face.distToShape(Part.Vertex(p))[0]
-    if d == 0.0 or not isinstance(face, Part.Face) or not _winds(face):
+    if d == 0.0 or not isinstance(face, Part.Face) or not winds(face):
         return d
+    return min(d, domain_distance(face, p))
+
+
+def domain_distance(face, p):
+    """Distance from point p to its projection onto face's surface where the face's
+    domain test (isPartOfDomain, which follows the pcurves round the seam) holds that
+    projection, else infinity."""
     s = face.Surface
     try:
         u, v = s.parameter(p)
     except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
-        return d
-    return min(d, (s.value(u, v) - p).Length) if face.isPartOfDomain(u, v) else d
+        return math.inf
+    return (s.value(u, v) - p).Length if face.isPartOfDomain(u, v) else math.inf
 
 
-def _winds(face):
+def winds(face):
     """True when face's domain spans more than one period of its surface."""
     s = face.Surface
     u0, u1, v0, v1 = face.ParameterRange
