@@ -125,6 +125,9 @@ def parts():
     out.append(("equal pipes r = 6 in a tee (faces tangent at 2 points)", et, edges, 1.0))
     ns, edge = shapes.nurbs_sphere_through_plate(45.0)
     out.append(("toNurbs() sphere through a plate, turned 45 degrees", ns, [edge], 1.0))
+    ep, edge = shapes.ellipsoid_on_plate()
+    for r in (0.3, 0.8, 2.0):
+        out.append(("Part Ellipsoid 6 x 3 x 3 on a plate (only C0)", ep, [edge], r))
     cl = shapes.crossing_lofts()
     out.append(("two crossing lofts of ellipses (B-spline / B-spline)", cl,
                 names(cl, lambda e: len(cl.ancestorsOfType(e, Part.Face)) == 2 and all(

@@ -631,6 +631,24 @@ def nurbs_sphere_through_plate(turn):
                    and 5 < e.BoundBox.XLength < 12)
 
 
+def ellipsoid_on_plate():
+    """FreeCAD's Part Ellipsoid primitive, 6 along x, 3 along y and z (a rational
+    B-spline with double knots, only C0 to the BOP check), fused on a 30 x 30 x 3 plate
+    below z = 0. Returns (solid, name of the junction at z = 0)."""
+    doc = FreeCAD.newDocument("EllipsoidOnPlate")
+    try:
+        e = doc.addObject("Part::Ellipsoid", "Ellipsoid")
+        e.Radius1, e.Radius2, e.Radius3 = 3, 6, 3
+        doc.recompute()
+        ell = e.Shape.copy()
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+    s = ell.fuse(Part.makeBox(30, 30, 3, V(-15, -15, -3))).removeSplitter()
+    return s, next("Edge%d" % (i + 1) for i, x in enumerate(s.Edges)
+                   if abs(x.BoundBox.ZMin) < 1e-6 and abs(x.BoundBox.ZMax) < 1e-6
+                   and abs(x.BoundBox.XLength - 12) < 1)
+
+
 def crossing_lofts():
     """A loft through 6 x 4, 5 x 3.5 and 6 x 4 ellipses at z = 0, 6 and 12, and one
     through ellipses of 0.4 that size from z = -4 to 16, turned to lie along y through

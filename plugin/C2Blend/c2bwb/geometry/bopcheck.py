@@ -168,14 +168,16 @@ def _watched(shape, seconds, meanwhile, suspects):
 def faulty(shape, faces, seconds, ignore=None):
     """Those of `faces` (faces of `shape`) in whose neighbourhood the BOP check finds
     something wrong (or does not finish within `seconds`): where the findings on the
-    whole shape are. Findings containing `ignore` (a string, such as 'GeomAbs_C0')
-    do not count."""
+    whole shape are. Findings for which ignore(neighbourhood, finding) is true (the
+    neighbourhood: a compound of faces; the finding: one line of OCCT's, such as
+    'Error in Face: BOPAlgo GeomAbs_C0') do not count."""
     out = []
     for f in faces:
         try:
-            found = _checked(_neighbourhood(shape, f), seconds)
-            if found is not None and any(ignore is None or ignore not in x
-                                         for x in _findings(found)):
+            near = _neighbourhood(shape, f)
+            found = _checked(near, seconds)
+            if found is not None and not all(ignore and ignore(near, x)
+                                             for x in _findings(found)):
                 out.append(f)
         except Unfinished:
             out.append(f)
