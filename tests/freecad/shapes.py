@@ -631,6 +631,19 @@ def nurbs_sphere_through_plate(turn):
                    and 5 < e.BoundBox.XLength < 12)
 
 
+def nurbs_sphere_on_its_side():
+    """nurbs_sphere_through_plate, but the sphere turned by 90 degrees about the y axis
+    (its poles at z = 7), so that the junction at z = 5 crosses its seam. The BOP check
+    finds a self-intersection on this input besides its C0 geometry. Returns (solid,
+    names of the two junction edges at z = 5)."""
+    sphere = Part.Solid(Part.Shell(Part.makeSphere(5, V(0, 0, 7)).Faces[0].toNurbs().Faces))
+    sphere.rotate(V(0, 0, 7), V(0, 1, 0), 90)
+    s = Part.makeBox(40, 40, 5, V(-20, -20, 0)).fuse(sphere).removeSplitter()
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if abs(e.BoundBox.ZMin - 5) < 1e-6 and abs(e.BoundBox.ZMax - 5) < 1e-6
+               and 5 < e.BoundBox.XLength < 12]
+
+
 def ellipsoid_on_plate():
     """FreeCAD's Part Ellipsoid primitive, 6 along x, 3 along y and z (a rational
     B-spline with double knots, only C0 to the BOP check), fused on a 30 x 30 x 3 plate
