@@ -125,6 +125,10 @@ def parts():
     out.append(("equal pipes r = 6 in a tee (faces tangent at 2 points)", et, edges, 1.0))
     ns, edge = shapes.nurbs_sphere_through_plate(45.0)
     out.append(("toNurbs() sphere through a plate, turned 45 degrees", ns, [edge], 1.0))
+    for axis in ("x", "y"):
+        ns, edges = shapes.nurbs_sphere_on_its_side(axis)
+        out.append(("toNurbs() sphere through a plate, turned on its side about %s" % axis,
+                    ns, edges, 1.0))
     ep, edge = shapes.ellipsoid_on_plate()
     for r in (0.3, 0.8, 2.0):
         out.append(("Part Ellipsoid 6 x 3 x 3 on a plate (only C0)", ep, [edge], r))

@@ -631,13 +631,14 @@ def nurbs_sphere_through_plate(turn):
                    and 5 < e.BoundBox.XLength < 12)
 
 
-def nurbs_sphere_on_its_side():
-    """nurbs_sphere_through_plate, but the sphere turned by 90 degrees about the y axis
-    (its poles at z = 7), so that the junction at z = 5 crosses its seam. The BOP check
-    finds a self-intersection on this input besides its C0 geometry. Returns (solid,
-    names of the two junction edges at z = 5)."""
+def nurbs_sphere_on_its_side(axis="y"):
+    """nurbs_sphere_through_plate, but the sphere turned by 90 degrees about the x or y
+    `axis` (its poles at z = 7). The BOP check finds a self-intersection on this input
+    besides its C0 geometry (and, about x, curves off their faces). Returns (solid,
+    names of the junction edges at z = 5: two about y, where the junction crosses the
+    sphere's seam, one about x)."""
     sphere = Part.Solid(Part.Shell(Part.makeSphere(5, V(0, 0, 7)).Faces[0].toNurbs().Faces))
-    sphere.rotate(V(0, 0, 7), V(0, 1, 0), 90)
+    sphere.rotate(V(0, 0, 7), V(1, 0, 0) if axis == "x" else V(0, 1, 0), 90)
     s = Part.makeBox(40, 40, 5, V(-20, -20, 0)).fuse(sphere).removeSplitter()
     return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
                if abs(e.BoundBox.ZMin - 5) < 1e-6 and abs(e.BoundBox.ZMax - 5) < 1e-6
