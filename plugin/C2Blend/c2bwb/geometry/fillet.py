@@ -49,7 +49,7 @@ from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
 from .surface import (Frame, angle, face_distance, frame_at_point, mesh_area, off_surface,
-                      project, unreliable_area)
+                      only_c0, project)
 from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -694,13 +694,13 @@ def _fused(face, tools, tol):
 def _amiss(face, pieces):
     """What is wrong (str) with `pieces` as the pieces of face cut (_fused), judged by
     their areas: None when they add up to the face's (they agree to about 1e-6; 1e-3
-    is allowed). Where OCCT's areas are not to be trusted (surface.unreliable_area),
+    is allowed). Where OCCT's areas are not to be trusted (surface.only_c0),
     the areas of triangulations with one deflection, 2e-4 of the face's size, are
     compared instead: they agree to 1.2e-5 on the cap of a toNurbs() sphere turned on
     its side, cut along its fillet, where OCCT's areas of the pieces add up to 221.03
     of the face's 221.87."""
     area, whole = sum(f.Area for f in pieces), face.Area
-    if abs(area - whole) > 1e-3 * whole and unreliable_area(face):
+    if abs(area - whole) > 1e-3 * whole and only_c0(face):
         d = 2e-4 * face.BoundBox.DiagonalLength
         area, whole = sum(mesh_area(f, d) for f in pieces), mesh_area(face, d)
     if area < (1.0 - 1e-3) * whole:
@@ -1006,8 +1006,8 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     # an input that fails the BOP check for C0 geometry only does not stop the faults
     # that are new being looked for around the blends: they are the fillet's
     c0_input = orig is not None and _input_only_c0(shape, orig)
-    unreliable = _c0_unreliable(solid) if orig and C0_FINDING in orig and bop and any(
-        f.endswith(C0_UNRELIABLE) for f in _counts(problems)) else []
+    unreliable = _c0_unreliable(solid) if orig and C0_FINDING in orig and bop and \
+        _unreliable_count(problems) else []
     inherited = _inherited(problems, orig, solid, unreliable) if problems else None
     if inherited:
         problems, line = None, inherited
@@ -1097,9 +1097,8 @@ def _inherited(problems, orig, solid, unreliable=()):
     None otherwise."""
     if not orig or C0_FINDING not in orig or bc.problems(solid, bop=False):
         return None
-    counts = _counts(problems)
-    flaky = sum(n for f, n in counts.items() if f.endswith(C0_UNRELIABLE))
-    if any(not f.endswith((C0_FINDING,) + C0_UNRELIABLE) for f in counts) or \
+    flaky = _unreliable_count(problems)
+    if not _only_c0(problems, (C0_FINDING,) + C0_UNRELIABLE) or \
             flaky > sum(n for _, n in unreliable):
         return None
     c0 = "; ".join(f for f in problems.split("; ") if C0_FINDING in f)
@@ -1128,6 +1127,12 @@ def _counts(findings):
     return out
 
 
+def _unreliable_count(findings):
+    """How many of the findings of a problems line are self-interference findings
+    (C0_UNRELIABLE)."""
+    return sum(n for f, n in _counts(findings).items() if f.endswith(C0_UNRELIABLE))
+
+
 def _only_c0(findings, kinds=(C0_FINDING,)):
     """True when every finding of a problems line (bopcheck.problems) is on geometry
     that is only C0 (or, with `kinds`, ends with one of those)."""
@@ -1141,7 +1146,7 @@ def _input_only_c0(shape, findings):
     if C0_FINDING not in findings or \
             not _only_c0(findings, C0_UNRELIABLE + (C0_FINDING,)):
         return False
-    flaky = sum(n for f, n in _counts(findings).items() if f.endswith(C0_UNRELIABLE))
+    flaky = _unreliable_count(findings)
     return not flaky or flaky <= sum(n for _, n in _c0_unreliable(shape))
 
 
@@ -1159,14 +1164,14 @@ def _c0_unreliable(solid):
     before it). A region bounded by a plane section cannot intersect itself."""
     out = []
     for f in solid.Faces:
-        if not isinstance(f.Surface, Part.BSplineSurface):
+        if not only_c0(f):  # no other face gets GeomAbs_C0: not worth a check
             continue
         try:
             found = bc.problems(f, bc.NEAR_LIMIT)
             if found is None or C0_FINDING not in found or \
                     not _only_c0(found, C0_UNRELIABLE + (C0_FINDING,)):
                 continue
-            count = sum(n for x, n in _counts(found).items() if x.endswith(C0_UNRELIABLE))
+            count = _unreliable_count(found)
             edges = bc.problems(Part.Compound(f.Edges), bc.NEAR_LIMIT)
         except bc.Unfinished:
             continue

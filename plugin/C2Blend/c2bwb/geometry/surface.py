@@ -207,10 +207,11 @@ def tessellation(face, deflection):
     return pts, tris, uvs
 
 
-def unreliable_area(face):
+def only_c0(face):
     """True for a B-spline face whose surface is only C0 (knots of full multiplicity,
-    as toNurbs() and a rotating transformGeometry make): OCCT's integration of its
-    area (face.Area) is off by up to 0.9% there. A toNurbs() sphere r = 5 gets 315.32
+    as toNurbs() and a rotating transformGeometry make), which the BOP check reports
+    as GeomAbs_C0. OCCT's integration of its area (face.Area) is off by up to 0.9%
+    there. A toNurbs() sphere r = 5 gets 315.32
     for 314.16, a band of it 2.7e-3 too much; its cap of height 7, 219.91, gets 220.19
     to 221.87 as the sphere is turned (mesh_area: 219.90)."""
     s = face.Surface
