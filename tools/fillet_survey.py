@@ -132,6 +132,14 @@ def parts():
     ep, edge = shapes.ellipsoid_on_plate()
     for r in (0.3, 0.8, 2.0):
         out.append(("Part Ellipsoid 6 x 3 x 3 on a plate (only C0)", ep, [edge], r))
+    for scale, z, turn, r in (((1.5, 1.5, 1.5), 1.0, 0.0, 0.4),
+                              ((1.5, 1.0, 1.0), 1.0, 0.0, 0.4),
+                              ((1.5, 1.5, 1.5), 0.5, 30.0, 0.4),
+                              ((1.5, 1.2, 1.0), 1.0, 20.0, 0.3),
+                              ((1.5, 1.2, 1.0), 0.5, 20.0, 0.5)):
+        tp, edges = shapes.scaled_torus_on_plate(scale, z, turn)
+        out.append(("torus scaled %s by transformGeometry, at z = %g turned %g, on a plate"
+                    % ("x".join("%g" % x for x in scale), z, turn), tp, edges, r))
     cl = shapes.crossing_lofts()
     out.append(("two crossing lofts of ellipses (B-spline / B-spline)", cl,
                 names(cl, lambda e: len(cl.ancestorsOfType(e, Part.Face)) == 2 and all(

@@ -728,3 +728,23 @@ def losing_far_face(sewn, shape, edge):
         return sewn([f for f in faces if f is not lost])
 
     return lose
+
+
+def scaled_torus_on_plate(scale=(1.5, 1.5, 1.5), z=1.0, turn=0.0):
+    """A torus (radii 5 and 2, centred at (0, 0, z), turned by `turn` degrees about its
+    axis) scaled by `scale` with transformGeometry, which makes it a rational B-spline
+    periodic in both directions, only C0 at its knots; fused on a 40 x 40 x 3 plate
+    below z = 0. Its face above the plate spans, in the tube's direction, parameters
+    across the surface's periodic range (v in [5.72, 9.91] of [0, 2 pi] for the
+    default). Returns (solid, names of the two junctions at z = 0, outer first)."""
+    t = Part.makeTorus(5, 2, V(0, 0, z))
+    t.rotate(V(0, 0, z), V(0, 0, 1), turn)
+    m = FreeCAD.Matrix()
+    m.scale(*scale)
+    plate = Part.makeBox(40, 40, 3, V(-20, -20, -3))
+    s = plate.fuse(t.transformGeometry(m)).removeSplitter()
+    rims = sorted((e for e in s.Edges if abs(e.BoundBox.ZMin) < 1e-6
+                   and abs(e.BoundBox.ZMax) < 1e-6 and 1 < e.BoundBox.XLength < 30),
+                  key=lambda e: -e.Length)
+    return s, ["Edge%d" % (i + 1) for r in rims
+               for i, e in enumerate(s.Edges) if e.isSame(r)]
