@@ -666,12 +666,15 @@ def _cut_face(face, tools, sharp, legs, tol):
     except Exception:  # OCCT's, in several classes
         rebased = face
 
-    def attempts():
+    def attempts():  # each remedy only where it changes a tool: the same cut fails again
         for f in ((rebased, face) if rebased is not face else (face,)):
             yield f, tools
-            yield f, [_restarted(e, f, tol) for e in tools]
-            yield f, [_restarted(e) for e in tools]
-            yield f, _snapped_to_seams(tools, f, tol)
+            for remedy in (lambda: [_restarted(e, f, tol) for e in tools],
+                           lambda: [_restarted(e) for e in tools],
+                           lambda: _snapped_to_seams(tools, f, tol)):
+                cut = remedy()
+                if any(a is not b for a, b in zip(cut, tools)):
+                    yield f, cut
 
     pieces = None
     for f, cut in attempts():
