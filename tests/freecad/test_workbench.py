@@ -1406,14 +1406,18 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     monkeypatch.setattr(fl.cn, "fill", fill)
     monkeypatch.setattr(fl.bc._Server, "send", send)
     given_up = unfinished_checks(monkeypatch)
-    monkeypatch.setattr(fl.bc, "NEAR_LIMIT", 3.0)
+    # the real neighbourhood checks take up to 0.9 s (also under the sanitizers), 2.0 s
+    # with four busy processes beside them, and one passed 3 s in CI (another shard
+    # beside it): only the injected one may be given up
+    near = 15.0
+    monkeypatch.setattr(fl.bc, "NEAR_LIMIT", near)
     monkeypatch.setattr(fl.bc, "WATCH_AFTER", 1.0)
     box = shapes.box()
     edges = ["Edge%d" % (i + 1) for i in range(12)]
     solid, rep = C2Blend.fillet_report(box, edges, 2.0, label="Box")
     # one corner's neighbourhood check was stuck, and the whole check stopped with it
     assert [len(ex.stuck) for ex in given_up] == [1]
-    assert "within 3 s on the neighbourhood of a plate filling" in str(given_up[0])
+    assert "within %.0f s on the neighbourhood of a plate filling" % near in str(given_up[0])
     assert len(made) == 9  # eight corners, one of them filled again
     assert made[8][1] != made[0][1] and not poisoned(solid)
     assert_valid(solid)
