@@ -64,7 +64,7 @@ def main():
             sys.stderr.write(r.stderr)
             sys.exit(r.returncode)
         V, T = read_ply(ply)
-    xyz, nrm, k1, k2, region = V[:, 0:3], V[:, 3:6], V[:, 6], V[:, 7], V[:, 8].astype(int)
+    xyz, k1, k2, region = V[:, 0:3], V[:, 6], V[:, 7], V[:, 8].astype(int)
     tri = xyz[T]
     # Lambert shading from the face normal (two-sided), light from the viewer's upper left.
     fn = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])

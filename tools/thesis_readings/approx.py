@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Independent re-implementation of thesis sec. 3.4.1 (eq. 120-125) for the eqs. 127-129
 example (t=0.1) and eqs. 87-88 (t=0.2), with alternative readings. numpy only."""
-import numpy as np, sys
+import numpy as np
 from numpy.polynomial import polynomial as P
 PI = np.pi
 
@@ -89,7 +89,8 @@ def approx_H(bc, beta, M, ui, mode="lsq", shape=(1, 1, 1, 1), weights=None, rho_
 
 def example(which):
     if which == "127":
-        a, b, c, d, h1, h2, h3, t = 3.6, 5.5, 6.0, 3.0, 2.0, 6.0, 20.0, 0.1
+        # eq. 127's x and y data (its z data, h1 to h3 = 2, 6, 20, are not needed here)
+        a, b, c, d, t = 3.6, 5.5, 6.0, 3.0, 0.1
         u0, u1 = 0.4, 0.55
         bx = [a * u0 * np.exp(t), -a * np.exp(t), 0, c * u1 * np.exp(-t), c * np.exp(-t), 0]
         by = [b * u0 * np.exp(-t), -b * np.exp(-t), 0, d * u1 * np.exp(t), d * np.exp(t), 0]
