@@ -612,6 +612,68 @@ c2b_status c2b_blend_eval(const c2b_blend *b, size_t npts, const double *u, cons
     return C2B_OK;
 }
 
+/* The v-table of a grid evaluation: each term's v-derivatives up to the order are
+ * multiples of a few functions (c2b_vfunc_derivative), shared between the derivatives and
+ * the components, so each distinct one is evaluated once per v. */
+typedef struct vtable {
+    c2b_vfunc *row; /* the distinct functions */
+    int nrow;
+    int *ri;        /* per (term, bv): its row, -1 where the derivative vanishes */
+    double *fac;    /* per (term, bv): the multiple */
+} vtable;
+
+typedef struct vtable_entry {
+    c2b_vfunc g;
+    size_t at; /* term * K + bv */
+} vtable_entry;
+
+static int vtable_entry_cmp(const void *a, const void *b)
+{
+    return c2b_vfunc_compare(&((const vtable_entry *)a)->g, &((const vtable_entry *)b)->g);
+}
+
+static void vtable_free(vtable *vt)
+{
+    free(vt->row);
+    free(vt->ri);
+    free(vt->fac);
+}
+
+/* Build the table over the tt terms of all components (in component order), K = order + 1.
+ * Returns -1 when out of memory; vtable_free() releases it either way. */
+static int vtable_build(const c2b_blend *b, size_t tt, size_t K, vtable *vt)
+{
+    size_t ne = tt * K, k = 0;
+    vtable_entry *e = malloc((ne ? ne : 1) * sizeof *e);
+    vt->row = malloc((ne ? ne : 1) * sizeof *vt->row);
+    vt->ri = malloc((ne ? ne : 1) * sizeof *vt->ri);
+    vt->fac = malloc((ne ? ne : 1) * sizeof *vt->fac);
+    vt->nrow = 0;
+    if (!e || !vt->row || !vt->ri || !vt->fac) {
+        free(e);
+        return -1;
+    }
+    size_t T = 0;
+    for (int c = 0; c < C2B_NCOMP; c++)
+        for (int t = 0; t < b->comp[c].nt; t++, T++)
+            for (size_t bv = 0; bv < K; bv++) {
+                c2b_vfunc g;
+                double f = c2b_vfunc_derivative(&b->comp[c].terms[t].f, (int)bv, &g);
+                vt->fac[T * K + bv] = f;
+                vt->ri[T * K + bv] = -1;
+                if (f != 0.0)
+                    e[k++] = (vtable_entry){g, T * K + bv};
+            }
+    qsort(e, k, sizeof *e, vtable_entry_cmp);
+    for (size_t i = 0; i < k; i++) {
+        if (i == 0 || c2b_vfunc_compare(&e[i].g, &e[i - 1].g))
+            vt->row[vt->nrow++] = e[i].g;
+        vt->ri[e[i].at] = vt->nrow - 1;
+    }
+    free(e);
+    return 0;
+}
+
 c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, size_t nv,
                                const double *v, int order, double *out, c2b_error *err)
 {
@@ -628,72 +690,90 @@ c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, s
     for (size_t j = 0; j < nv; j++)
         if (!isfinite(v[j]))
             return c2b_error_set(err, C2B_ERR_ARG, "evaluation: v[%zu] is not finite", j);
-    size_t nd = c2b_blend_deriv_count(order), K = (size_t)order + 1;
+    if (!nu || !nv)
+        return C2B_OK;
+    size_t nd = c2b_blend_deriv_count(order), K = (size_t)order + 1, tt = 0;
     double L = b->pb.dom.v1 - b->pb.dom.v0;
-    size_t nt[C2B_NCOMP], tt = 0, off[C2B_NCOMP];
-    for (int c = 0; c < C2B_NCOMP; c++) {
-        nt[c] = (size_t)b->comp[c].nt;
-        off[c] = tt;
-        tt += nt[c];
-    }
-    /* Tables over all terms T of all components: gu[T][a][i] (u-profiles),
-     * fv[T][bv][j] (v-functions); acc[j] accumulates one output column. */
-    double *gu = malloc((tt ? tt : 1) * K * (nu ? nu : 1) * sizeof *gu);
-    double *fv = malloc((tt ? tt : 1) * K * (nv ? nv : 1) * sizeof *fv);
-    double *acc = malloc((nv ? nv : 1) * sizeof *acc);
+    for (int c = 0; c < C2B_NCOMP; c++)
+        tt += (size_t)b->comp[c].nt;
+    /* Per point (u, v), derivative and component: the sum over the component's terms
+     * of its u-profile times its v-multiple times a row of the v-table. Blocks of v
+     * keep the table's rows in cache (about 256 KB). */
+    vtable vt;
+    double *gu = malloc((tt ? tt : 1) * K * nu * sizeof *gu);
     double complex *phi = malloc(((size_t)b->nmodes + 1) * 4 * C2B_MAX_M * sizeof *phi);
-    if (!gu || !fv || !acc || !phi) {
-        free(gu);
-        free(fv);
-        free(acc);
-        free(phi);
-        return c2b_error_set(err, C2B_ERR_NOMEM, "out of memory for a %zu x %zu grid", nu, nv);
+    int bad = vtable_build(b, tt, K, &vt);
+    size_t nr = vt.nrow ? (size_t)vt.nrow : 1, rows = 3 * nd;
+    size_t NVB = 32768 / nr < 16 ? 16 : 32768 / nr > 512 ? 512 : 32768 / nr;
+    double *B = malloc(nr * NVB * sizeof *B), *acc = malloc(NVB * sizeof *acc);
+    if (bad || !gu || !phi || !B || !acc) {
+        st = c2b_error_set(err, C2B_ERR_NOMEM, "out of memory for a %zu x %zu grid", nu, nv);
+        goto done;
     }
     for (size_t i = 0; i < nu; i++) {
         /* Each cached mode's basis once per u, shared by all components and terms. */
         for (int mi = 0; mi < b->nmodes; mi++)
             c2b_mode_basis(b->modes[mi].m, u[i], order, phi + (size_t)mi * 4 * C2B_MAX_M);
+        size_t T = 0;
         for (int c = 0; c < C2B_NCOMP; c++)
-            for (size_t t = 0; t < nt[c]; t++) {
+            for (int t = 0; t < b->comp[c].nt; t++, T++) {
                 const term *tm = &b->comp[c].terms[t];
                 double g[4];
                 term_profile(b, tm, tm->mode >= 0 ? phi + (size_t)tm->mode * 4 * C2B_MAX_M : NULL,
                              u[i], order, g);
                 for (size_t a = 0; a < K; a++)
-                    gu[((off[c] + t) * K + a) * nu + i] = g[a];
+                    gu[(T * K + a) * nu + i] = g[a];
             }
     }
-    for (int c = 0; c < C2B_NCOMP; c++)
-        for (size_t t = 0; t < nt[c]; t++)
-            for (size_t j = 0; j < nv; j++) {
-                double f[4];
-                c2b_vfunc_eval(&b->comp[c].terms[t].f, v[j] - b->pb.dom.v0, L, order, f);
-                for (size_t bv = 0; bv < K; bv++)
-                    fv[((off[c] + t) * K + bv) * nv + j] = f[bv];
+    for (size_t j0 = 0; j0 < nv; j0 += NVB) {
+        size_t nvb = nv - j0 < NVB ? nv - j0 : NVB;
+        for (int r = 0; r < vt.nrow; r++) {
+            const c2b_vfunc *f = &vt.row[r];
+            double *row = B + (size_t)r * nvb;
+            if (f->kind == C2B_VF_COS && r + 1 < vt.nrow && vt.row[r + 1].kind == C2B_VF_SIN &&
+                vt.row[r + 1].omega == f->omega) {
+                /* cos and sin of one angle together (one sincos), as c2b_vfunc_value. */
+                for (size_t jj = 0; jj < nvb; jj++) {
+                    double x = f->omega * (v[j0 + jj] - b->pb.dom.v0);
+                    row[jj] = cos(x);
+                    row[nvb + jj] = sin(x);
+                }
+                r++;
+                continue;
             }
-    for (int c = 0; c < C2B_NCOMP; c++)
+            for (size_t jj = 0; jj < nvb; jj++)
+                row[jj] = c2b_vfunc_value(f, v[j0 + jj] - b->pb.dom.v0, L);
+        }
         for (size_t i = 0; i < nu; i++)
             for (int a = 0; a <= order; a++)
                 for (int bv = 0; a + bv <= order; bv++) {
-                    for (size_t j = 0; j < nv; j++)
-                        acc[j] = 0.0;
-                    for (size_t t = off[c]; t < off[c] + nt[c]; t++) {
-                        double g = gu[(t * K + (size_t)a) * nu + i];
-                        if (g == 0.0)
-                            continue;
-                        const double *f = fv + (t * K + (size_t)bv) * nv;
-                        for (size_t j = 0; j < nv; j++)
-                            acc[j] += g * f[j];
+                    size_t T0 = 0;
+                    for (int c = 0; c < C2B_NCOMP; T0 += (size_t)b->comp[c++].nt) {
+                        for (size_t jj = 0; jj < nvb; jj++)
+                            acc[jj] = 0.0;
+                        for (size_t T = T0; T < T0 + (size_t)b->comp[c].nt; T++) {
+                            int r = vt.ri[T * K + (size_t)bv];
+                            double g = gu[(T * K + (size_t)a) * nu + i] * vt.fac[T * K + (size_t)bv];
+                            if (r < 0 || g == 0.0)
+                                continue;
+                            const double *f = B + (size_t)r * nvb;
+                            for (size_t jj = 0; jj < nvb; jj++)
+                                acc[jj] += g * f[jj];
+                        }
+                        double *o = out + (i * nv + j0) * rows + (size_t)deriv_index(a, bv) * 3 +
+                                    (size_t)c;
+                        for (size_t jj = 0; jj < nvb; jj++)
+                            o[jj * rows] = acc[jj];
                     }
-                    size_t di = (size_t)deriv_index(a, bv);
-                    for (size_t j = 0; j < nv; j++)
-                        out[((i * nv + j) * nd + di) * 3 + (size_t)c] = acc[j];
                 }
+    }
+done:
+    vtable_free(&vt);
     free(gu);
-    free(fv);
-    free(acc);
     free(phi);
-    return C2B_OK;
+    free(B);
+    free(acc);
+    return st;
 }
 
 int c2b_blend_constraints(const c2b_blend *b) { return b->n; }

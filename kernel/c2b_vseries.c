@@ -40,50 +40,29 @@ double c2b_vfunc_beta(const c2b_vfunc *f)
     return 0.0;
 }
 
+double c2b_vfunc_value(const c2b_vfunc *f, double s, double L)
+{
+    switch (f->kind) {
+    case C2B_VF_POW: {
+        double p = 1.0;
+        for (int j = 0; j < f->power; j++)
+            p *= s;
+        return p;
+    }
+    case C2B_VF_COS: return cos(f->omega * s);
+    case C2B_VF_SIN: return sin(f->omega * s);
+    case C2B_VF_EXPP: return exp(f->omega * (s - L));
+    case C2B_VF_EXPM: return exp(-f->omega * s);
+    }
+    return 0.0;
+}
+
 void c2b_vfunc_eval(const c2b_vfunc *f, double s, double L, int maxd, double *out)
 {
-    double w = f->omega;
-    switch (f->kind) {
-    case C2B_VF_POW:
-        for (int q = 0; q <= maxd; q++) {
-            int m = f->power;
-            if (q > m) {
-                out[q] = 0.0;
-                continue;
-            }
-            double c = 1.0;
-            for (int j = 0; j < q; j++)
-                c *= (double)(m - j);
-            double p = 1.0;
-            for (int j = 0; j < m - q; j++)
-                p *= s;
-            out[q] = c * p;
-        }
-        return;
-    case C2B_VF_COS:
-    case C2B_VF_SIN: {
-        double c = cos(w * s), sn = sin(w * s);
-        /* derivatives of cos: cos, -w sin, -w^2 cos, w^3 sin; of sin: sin, w cos, -w^2 sin, -w^3 cos */
-        double wp = 1.0;
-        for (int q = 0; q <= maxd; q++) {
-            int ph = (q + (f->kind == C2B_VF_SIN ? 3 : 0)) % 4; /* sin = cos shifted by -pi/2 */
-            double v = ph == 0 ? c : ph == 1 ? -sn : ph == 2 ? -c : sn;
-            out[q] = wp * v;
-            wp *= w;
-        }
-        return;
-    }
-    case C2B_VF_EXPP:
-    case C2B_VF_EXPM: {
-        double sg = f->kind == C2B_VF_EXPP ? 1.0 : -1.0;
-        double e = f->kind == C2B_VF_EXPP ? exp(w * (s - L)) : exp(-w * s);
-        double wp = 1.0;
-        for (int q = 0; q <= maxd; q++) {
-            out[q] = wp * e;
-            wp *= sg * w;
-        }
-        return;
-    }
+    for (int q = 0; q <= maxd; q++) {
+        c2b_vfunc g;
+        double k = c2b_vfunc_derivative(f, q, &g);
+        out[q] = k == 0.0 ? 0.0 : k * c2b_vfunc_value(&g, s, L);
     }
 }
 
@@ -94,6 +73,50 @@ int c2b_vfunc_same(const c2b_vfunc *a, const c2b_vfunc *b)
     if (a->kind == C2B_VF_POW)
         return a->power == b->power;
     return fabs(a->omega - b->omega) <= 1e-13 * fmax(a->omega, b->omega);
+}
+
+double c2b_vfunc_derivative(const c2b_vfunc *f, int q, c2b_vfunc *g)
+{
+    *g = *f;
+    double w = f->omega, factor = 1.0;
+    switch (f->kind) {
+    case C2B_VF_POW:
+        if (q > f->power)
+            return 0.0;
+        for (int j = 0; j < q; j++)
+            factor *= (double)(f->power - j);
+        g->power = f->power - q;
+        return factor;
+    case C2B_VF_COS:
+    case C2B_VF_SIN:
+        /* cos -> -w sin -> -w^2 cos -> w^3 sin; sin -> w cos -> -w^2 sin -> -w^3 cos */
+        for (int j = 0; j < q; j++)
+            factor *= w;
+        if (q % 2)
+            g->kind = f->kind == C2B_VF_COS ? C2B_VF_SIN : C2B_VF_COS;
+        if ((f->kind == C2B_VF_COS && (q % 4 == 1 || q % 4 == 2)) ||
+            (f->kind == C2B_VF_SIN && (q % 4 == 2 || q % 4 == 3)))
+            factor = -factor;
+        return factor;
+    case C2B_VF_EXPP:
+    case C2B_VF_EXPM:
+        for (int j = 0; j < q; j++)
+            factor *= f->kind == C2B_VF_EXPP ? w : -w;
+        return factor;
+    }
+    return 0.0;
+}
+
+int c2b_vfunc_compare(const c2b_vfunc *a, const c2b_vfunc *b)
+{
+    int pa = a->kind == C2B_VF_POW, pb = b->kind == C2B_VF_POW;
+    if (pa != pb)
+        return pb - pa;
+    if (pa)
+        return (a->power > b->power) - (a->power < b->power);
+    if (a->omega != b->omega)
+        return a->omega < b->omega ? -1 : 1;
+    return (int)a->kind - (int)b->kind;
 }
 
 void c2b_vseries_clear(c2b_vseries *s)

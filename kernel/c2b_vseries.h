@@ -59,11 +59,28 @@ const char *c2b_vkind_name(c2b_vkind k);
 /** beta of a mode function (f'' = beta f; 0 for POW). */
 double c2b_vfunc_beta(const c2b_vfunc *f);
 
+/** f(s); L is the range length (EXPP is exp(omega (s - L))). */
+double c2b_vfunc_value(const c2b_vfunc *f, double s, double L);
+
 /** f^{(q)}(s), q = 0..maxd (maxd <= 3), into out[q]; L is the range length. */
 void c2b_vfunc_eval(const c2b_vfunc *f, double s, double L, int maxd, double *out);
 
 /** 1 when two mode functions are the same (omega equal to 1e-13 relative). */
 int c2b_vfunc_same(const c2b_vfunc *a, const c2b_vfunc *b);
+
+/**
+ * The q-th derivative of f as a multiple of a function of the same family:
+ * f^{(q)} = factor * g (POW s^m: m!/(m-q)! s^(m-q), factor 0 for q > m; COS and SIN:
+ * +-omega^q times COS or SIN; EXPP, EXPM: (+-omega)^q times itself). Fills *g and
+ * returns factor.
+ */
+double c2b_vfunc_derivative(const c2b_vfunc *f, int q, c2b_vfunc *g);
+
+/**
+ * Exact order of mode functions (for sorting): powers first by power, then by omega,
+ * then kind, so that COS and SIN of one omega are neighbours. Returns <0, 0 or >0.
+ */
+int c2b_vfunc_compare(const c2b_vfunc *a, const c2b_vfunc *b);
 
 /** A function of v expanded into modes; owns `terms`. Zero-initialise before use. */
 typedef struct c2b_vseries {

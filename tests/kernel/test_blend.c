@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
 #include "c2b_blend.h"
 #include "c2b_constants.h"
 #include "c2b_spec.h"
@@ -519,6 +521,72 @@ static void test_grid(void)
     c2b_spec_destroy(s);
 }
 
+/* Grid evaluation equals pointwise evaluation on a grid wider than its v-blocks (at most
+ * 512 v's), with every derivative up to 3 and hundreds of modes: periodic samples of
+ * kinked functions (|sin(v / 2)|, shifted per component: their Fourier coefficients
+ * decay only as 1/m^2, so the expansion keeps every harmonic up to 256). */
+static void test_grid_many_modes(void)
+{
+    enum { N = 512, NU = 37, NV = 701 };
+    char *buf = malloc(200000);
+    size_t k = (size_t)sprintf(buf, "{\"v_range\": [0, 6.283185307179586], \"periodic\": true, "
+                                    "\"boundary\": {");
+    for (int side = 0; side < 2; side++) {
+        k += (size_t)sprintf(buf + k, "%s\"u%d\": [{\"samples\": [", side ? ", " : "", side);
+        for (int i = 0; i < N; i++) {
+            double v = 2 * C2B_PI * i / N;
+            k += (size_t)sprintf(buf + k, "%s[%.17g, %.17g, %.17g]", i ? ", " : "",
+                                 (2 + side) * cos(v) + 0.3 * fabs(sin(v / 2)),
+                                 (2 - side) * sin(v) + 0.2 * fabs(sin((v - 1) / 2)),
+                                 side + 0.1 * fabs(sin((v - 2) / 2)));
+        }
+        k += (size_t)sprintf(buf + k, "]}, [\"%s\", \"0\", \"1\"], [\"0\", \"sin(v)\", \"0\"]]",
+                             side ? "cos(v)" : "0");
+    }
+    sprintf(buf + k, "}}");
+    c2b_spec *s;
+    c2b_blend *b = open_blend(buf, 0, "a blend of 512 kinked samples", &s);
+    if (!b) {
+        free(buf);
+        return;
+    }
+    /* Modes of y (sines and cosines of 256 frequencies), from the blend's description. */
+    size_t need = 0;
+    int modes = -1;
+    c2b_blend_info_json(b, buf, 1, &need, NULL);
+    char *info = malloc(need + 1);
+    if (info && !c2b_blend_info_json(b, info, need + 1, &need, NULL)) {
+        cJSON *j = cJSON_Parse(info);
+        cJSON *y = cJSON_GetArrayItem(cJSON_GetObjectItem(j, "components"), 1);
+        modes = cJSON_GetArraySize(cJSON_GetObjectItem(y, "modes"));
+        cJSON_Delete(j);
+    }
+    free(info);
+    free(buf);
+    check_true("y has over 500 modes", modes > 500);
+    double u[NU], v[NV];
+    for (int i = 0; i < NU; i++)
+        u[i] = (double)i / (NU - 1);
+    for (int j = 0; j < NV; j++)
+        v[j] = 6.2 * j / (NV - 1) + 0.01;
+    double *g = malloc((size_t)NU * NV * 30 * sizeof *g), p[30], diff = 0, scale = 0;
+    if (check_true("grid evaluated", g && !c2b_blend_eval_grid(b, NU, u, NV, v, 3, g, NULL))) {
+        for (int i = 0; i < NU; i++)
+            for (int j = 0; j < NV; j++) {
+                eval10(b, u[i], v[j], p);
+                for (int e = 0; e < 30; e++) {
+                    diff = fmax(diff, fabs(p[e] - g[((size_t)i * NV + j) * 30 + e]));
+                    scale = fmax(scale, fabs(p[e]));
+                }
+            }
+        check_le("37 x 701 grid equals pointwise evaluation (relative to the largest entry)",
+                 diff / scale, 1e-13);
+    }
+    free(g);
+    c2b_blend_destroy(b);
+    c2b_spec_destroy(s);
+}
+
 int main(void)
 {
     test_thesis_eq4();
@@ -530,5 +598,6 @@ int main(void)
     test_figure2();
     test_per_component_shape();
     test_grid();
+    test_grid_many_modes();
     return test_summary("test_blend");
 }

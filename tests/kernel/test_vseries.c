@@ -284,8 +284,49 @@ static void test_k200_blend(void)
     c2b_blend_destroy(b);
 }
 
+/* Each mode function's derivatives up to 3 against their closed forms (calculus, written
+ * out here), and each as a multiple of one function (c2b_vfunc_derivative) that the
+ * grid evaluation shares between derivatives and components. */
+static void test_mode_derivatives(void)
+{
+    const double w = 2.7, L = 1.3, s = 0.41;
+    const double c = cos(w * s), sn = sin(w * s), ep = exp(w * (s - L)), em = exp(-w * s);
+    const struct {
+        c2b_vfunc f;
+        double d[4];
+    } cases[] = {
+        {{C2B_VF_POW, 0, 0}, {1, 0, 0, 0}},
+        {{C2B_VF_POW, 2, 0}, {s * s, 2 * s, 2, 0}},
+        {{C2B_VF_POW, 5, 0}, {pow(s, 5), 5 * pow(s, 4), 20 * pow(s, 3), 60 * s * s}},
+        {{C2B_VF_COS, 0, w}, {c, -w * sn, -w * w * c, w * w * w * sn}},
+        {{C2B_VF_SIN, 0, w}, {sn, w * c, -w * w * sn, -w * w * w * c}},
+        {{C2B_VF_EXPP, 0, w}, {ep, w * ep, w * w * ep, w * w * w * ep}},
+        {{C2B_VF_EXPM, 0, w}, {em, -w * em, w * w * em, -w * w * w * em}},
+    };
+    double worst = 0, worst_multiple = 0;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        double out[4];
+        c2b_vfunc_eval(&cases[k].f, s, L, 3, out);
+        for (int q = 0; q < 4; q++) {
+            double scale = fmax(1.0, fabs(cases[k].d[q]));
+            worst = fmax(worst, fabs(out[q] - cases[k].d[q]) / scale);
+            c2b_vfunc g;
+            double m = c2b_vfunc_derivative(&cases[k].f, q, &g);
+            double via = m == 0.0 ? 0.0 : m * c2b_vfunc_value(&g, s, L);
+            worst_multiple = fmax(worst_multiple, fabs(via - cases[k].d[q]) / scale);
+        }
+    }
+    check_le("mode functions' derivatives 0..3 match their closed forms", worst, 1e-14);
+    check_le("... and each is a multiple of one mode function", worst_multiple, 1e-14);
+    c2b_vfunc a = {C2B_VF_COS, 0, w}, b = {C2B_VF_SIN, 0, w}, p = {C2B_VF_POW, 7, 0};
+    check_true("mode functions order: powers first, cos before sin of one omega",
+               c2b_vfunc_compare(&p, &a) < 0 && c2b_vfunc_compare(&a, &b) < 0 &&
+               c2b_vfunc_compare(&b, &a) > 0 && c2b_vfunc_compare(&a, &a) == 0);
+}
+
 int main(void)
 {
+    test_mode_derivatives();
     test_structures();
     test_sample_error_estimate();
     test_end_slopes();
