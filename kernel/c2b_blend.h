@@ -68,8 +68,10 @@ c2b_status c2b_blend_eval(const c2b_blend *b, size_t npts, const double *u, cons
 
 /**
  * Evaluate on the tensor grid u[0..nu) x v[0..nv), rows ordered by u then v
- * (point index i * nv + j). Uses the separable structure: each mode's u-profile is
- * evaluated nu times and its v-function nv times.
+ * (point index i * nv + j). Uses the separable structure: each term's u-profile is
+ * evaluated nu times, and each distinct v-function (a term's v-derivatives, and terms of
+ * the three components, share them) nv times. Its sums may differ from
+ * c2b_blend_eval()'s in rounding only.
  * @return as c2b_blend_eval(); C2B_ERR_NOMEM for the internal tables.
  */
 c2b_status c2b_blend_eval_grid(const c2b_blend *b, size_t nu, const double *u, size_t nv,
