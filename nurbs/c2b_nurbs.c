@@ -1123,59 +1123,188 @@ static double nb_move(const nb_dir *d, double t)
     return nb_map_quiet(d, t);
 }
 
-/* Newton on f(t) = |C(t) - P|^2 / 2 from t; returns the final t and squared distance. */
-static void nb_curve_newton(const c2b_nurbs_curve *c, const double *P, double *tp, double *fp)
+/* What a projection is onto: a curve (n = 1, c) or a surface (n = 2, s), with its n
+ * parametric directions d. */
+typedef struct nb_target {
+    int n;
+    const nb_dir *d;
+    const c2b_nurbs_curve *c;
+    const c2b_nurbs_surface *s;
+} nb_target;
+
+/* The target's point at parameters x (in its domain) in S[0] and, when `second`, its
+ * first derivatives in S[1 + k] and its second derivatives in S[1 + n + k + l], k <= l:
+ * C, C', C'' for a curve; S, Su, Sv, Suu, Suv, Svv for a surface. */
+static void nb_target_eval(const nb_target *g, const double *x, int second, double S[6][3])
 {
-    const nb_dir *d = &c->d;
-    double len = nb_dom1(d) - nb_dom0(d);
-    double t = *tp, D[9];
-    nb_curve_eval_raw(c, t, 2, D);
-    double f = nb_dist2(D, P);
+    int nd = second ? 2 : 0;
+    if (g->c) {
+        nb_curve_eval_raw(g->c, x[0], nd, &S[0][0]);
+        return;
+    }
+    static const int at[6] = {0, 3, 1, 6, 4, 2}; /* skl index / 3 of S, Su, Sv, Suu, Suv, Svv */
+    double skl[3 * 3 * 3];
+    nb_surface_eval_raw(g->s, x[0], x[1], nd, nd, nd, skl);
+    for (int i = 0; i < (second ? 6 : 1); i++)
+        memcpy(S[i], skl + 3 * at[i], 3 * sizeof(double));
+}
+
+/* Newton on f(x) = |S(x) - P|^2 / 2 from x with the full Hessian
+ *   H_kl = S_k.S_l + r.S_kl,  r = S - P,
+ * a Gauss-Newton fallback (J_kl = S_k.S_l) where H is not positive definite, bound
+ * handling by holding a parameter at a non-periodic bound whose gradient points outward,
+ * a move along the better-conditioned direction alone where the 2 x 2 system is
+ * singular, and a halving line search for steps beyond NB_PROJ_LOCAL. Returns the final
+ * x and squared distance. */
+static void nb_newton(const nb_target *g, const double *P, double *xp, double *fp)
+{
+    int n = g->n;
+    const nb_dir *d = g->d;
+    double len[2] = {1.0, 1.0}, x[2] = {0.0, 0.0}, S[6][3], Sn[6][3];
+    for (int k = 0; k < n; k++) {
+        len[k] = nb_dom1(&d[k]) - nb_dom0(&d[k]);
+        x[k] = xp[k];
+    }
+    nb_target_eval(g, x, 1, S);
+    double f = nb_dist2(S[0], P);
     for (int it = 0; it < NB_PROJ_MAX_ITER; it++) {
-        double r[3] = {D[0] - P[0], D[1] - P[1], D[2] - P[2]};
-        double g = nb_dot3(r, D + 3);
-        double jj = nb_dot3(D + 3, D + 3);
-        double h = jj + nb_dot3(r, D + 6);
-        if (!(jj > 0) || g == 0)
-            break;
-        double step = h > 0 ? -g / h : -g / jj;
-        /* at a bound with the step pointing outward: converged there */
-        if (!d->periodic && ((t <= nb_dom0(d) && step < 0) || (t >= nb_dom1(d) && step > 0)))
-            break;
-        if (fabs(step) > 0.5 * len)
-            step = step > 0 ? 0.5 * len : -0.5 * len;
-        double tn = t, fn = f, Dn[9];
-        int accepted = 0;
-        if (fabs(step) <= NB_PROJ_LOCAL * len) {
-            tn = nb_move(d, t + step);
-            nb_curve_eval_raw(c, tn, 2, Dn);
-            fn = nb_dist2(Dn, P);
-            accepted = 1;
-        } else {
-            double lam = 1.0;
-            for (int ls = 0; ls < 60; ls++, lam *= 0.5) {
-                tn = nb_move(d, t + lam * step);
-                nb_curve_eval_raw(c, tn, 2, Dn);
-                fn = nb_dist2(Dn, P);
-                if (fn < f) {
-                    accepted = 1;
-                    break;
-                }
+        double r[3] = {S[0][0] - P[0], S[0][1] - P[1], S[0][2] - P[2]};
+        double gr[2] = {0.0, 0.0}, J[2][2] = {{0.0}}, H[2][2] = {{0.0}};
+        int freev[2] = {0, 0};
+        for (int k = 0; k < n; k++) {
+            gr[k] = nb_dot3(r, S[1 + k]);
+            for (int l = 0; l < n; l++) {
+                J[k][l] = nb_dot3(S[1 + k], S[1 + l]);
+                H[k][l] = J[k][l] + nb_dot3(r, S[1 + n + k + l]);
             }
+            freev[k] = d[k].periodic || !((x[k] <= nb_dom0(&d[k]) && gr[k] > 0) ||
+                                          (x[k] >= nb_dom1(&d[k]) && gr[k] < 0));
+        }
+        double step[2] = {0.0, 0.0};
+        if (freev[0] && freev[1]) {
+            double det = H[0][0] * H[1][1] - H[0][1] * H[1][0];
+            const double(*M)[2] = H;
+            if (!(H[0][0] > 0 && det > 0)) {
+                M = J;
+                det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+            }
+            if (det > 1e-300 && det > 1e-14 * M[0][0] * M[1][1]) {
+                step[0] = -(M[1][1] * gr[0] - M[0][1] * gr[1]) / det;
+                step[1] = -(M[0][0] * gr[1] - M[1][0] * gr[0]) / det;
+            } else {
+                int k = J[0][0] >= J[1][1] ? 0 : 1;
+                freev[1 - k] = 0;
+            }
+        }
+        if (freev[0] != freev[1]) {
+            int k = freev[0] ? 0 : 1;
+            double h = H[k][k] > 0 ? H[k][k] : J[k][k];
+            if (h > 0)
+                step[k] = -gr[k] / h;
+        }
+        if (step[0] == 0 && step[1] == 0)
+            break;
+        int local = 1;
+        for (int k = 0; k < n; k++) {
+            if (fabs(step[k]) > 0.5 * len[k])
+                step[k] = step[k] > 0 ? 0.5 * len[k] : -0.5 * len[k];
+            local = local && fabs(step[k]) <= NB_PROJ_LOCAL * len[k];
+        }
+        double xn[2] = {x[0], x[1]}, fn = f;
+        int accepted = 0;
+        double lam = 1.0;
+        for (int ls = 0; ls < 60 && !accepted; ls++, lam *= 0.5) {
+            for (int k = 0; k < n; k++)
+                xn[k] = nb_move(&d[k], x[k] + lam * step[k]);
+            nb_target_eval(g, xn, 1, Sn);
+            fn = nb_dist2(Sn[0], P);
+            accepted = local || fn < f; /* a local step is taken as it is */
         }
         if (!accepted)
             break;
-        double moved = fabs(tn - t);
-        if (d->periodic && moved > 0.5 * len)
-            moved = len - moved;
-        t = tn;
+        int small = 1;
+        for (int k = 0; k < n; k++) {
+            double moved = fabs(xn[k] - x[k]);
+            if (d[k].periodic && moved > 0.5 * len[k])
+                moved = len[k] - moved;
+            if (moved > NB_PROJ_STEP_TOL * len[k])
+                small = 0;
+        }
+        memcpy(x, xn, sizeof x);
         f = fn;
-        memcpy(D, Dn, sizeof D);
-        if (moved <= NB_PROJ_STEP_TOL * len)
+        memcpy(S, Sn, sizeof S);
+        if (small)
             break;
     }
-    *tp = t;
+    for (int k = 0; k < n; k++)
+        xp[k] = x[k];
     *fp = f;
+}
+
+/* The closest point of the target to `point`: its parameters in x[0 .. n-1] and the
+ * distance (dist may be NULL). The candidates are the NB_PROJ_CANDIDATES nearest of a grid
+ * of NB_PROJ_PER_SPAN samples per knot span and direction (fewer per span, then a stride
+ * over them, when the grid would exceed NB_PROJ_MAX_GRID points), each refined by
+ * nb_newton. */
+static c2b_status nb_project(const nb_target *g, const double *point, double *x, double *dist,
+                             c2b_error *err)
+{
+    char s0[32], s1[32], s2[32];
+    if (!isfinite(point[0]) || !isfinite(point[1]) || !isfinite(point[2]))
+        return c2b_error_set(err, C2B_ERR_ARG, "projection: point (%s, %s, %s) is not finite",
+                             nb_num(point[0], s0, sizeof s0), nb_num(point[1], s1, sizeof s1),
+                             nb_num(point[2], s2, sizeof s2));
+    int n = g->n;
+    const nb_dir *d = g->d;
+    int per[2] = {NB_PROJ_PER_SPAN, n == 2 ? NB_PROJ_PER_SPAN : 1};
+    long cnt[2] = {1, 1}, stride[2] = {1, 1};
+    for (int k = 0; k < n; k++)
+        cnt[k] = nb_samples(&d[k], per[k], NULL);
+    while (cnt[0] * cnt[1] > NB_PROJ_MAX_GRID && (per[0] > 1 || per[1] > 1)) {
+        int k = (per[0] > 1 && (cnt[0] >= cnt[1] || per[1] == 1)) ? 0 : 1;
+        cnt[k] = nb_samples(&d[k], --per[k], NULL);
+    }
+    /* with one sample per span and still too many, stride over the samples */
+    for (int k = 0; k < n; k++)
+        while ((cnt[0] / stride[0] + 1) * (cnt[1] / stride[1] + 1) > NB_PROJ_MAX_GRID &&
+               cnt[k] / stride[k] > 1000)
+            stride[k] *= 2;
+    double *su = malloc((size_t)(cnt[0] + cnt[1]) * sizeof(double));
+    if (!su)
+        return c2b_error_set(err, C2B_ERR_NOMEM, "projection: out of memory");
+    double *sv = su + cnt[0];
+    sv[0] = 0.0;
+    for (int k = 0; k < n; k++)
+        nb_samples(&d[k], per[k], k ? sv : su);
+    double best[NB_PROJ_CANDIDATES], par[NB_PROJ_CANDIDATES][2];
+    for (int i = 0; i < NB_PROJ_CANDIDATES; i++) {
+        best[i] = INFINITY;
+        par[i][0] = nb_dom0(&d[0]);
+        par[i][1] = n == 2 ? nb_dom0(&d[1]) : 0.0;
+    }
+    double S[6][3];
+    for (long i = 0; i < cnt[0]; i += stride[0])
+        for (long j = 0; j < cnt[1]; j += stride[1]) {
+            double at[2] = {su[i], sv[j]};
+            nb_target_eval(g, at, 0, S);
+            nb_keep(best, par, NB_PROJ_CANDIDATES, nb_dist2(S[0], point), at[0], at[1]);
+        }
+    free(su);
+    double bx[2] = {par[0][0], par[0][1]}, bf = INFINITY;
+    for (int i = 0; i < NB_PROJ_CANDIDATES && isfinite(best[i]); i++) {
+        double xi[2] = {par[i][0], par[i][1]}, f;
+        nb_newton(g, point, xi, &f);
+        if (f < bf) {
+            bf = f;
+            memcpy(bx, xi, sizeof bx);
+        }
+    }
+    for (int k = 0; k < n; k++)
+        x[k] = bx[k];
+    if (dist)
+        *dist = sqrt(bf);
+    return isfinite(bf) ? C2B_OK
+                        : c2b_error_set(err, C2B_ERR_NUMERIC, "projection: no finite distance");
 }
 
 c2b_status c2b_nurbs_curve_project(const c2b_nurbs_curve *c, const double *point, double *t,
@@ -1183,52 +1312,17 @@ c2b_status c2b_nurbs_curve_project(const c2b_nurbs_curve *c, const double *point
 {
     if (!c || !point || !t)
         return c2b_error_set(err, C2B_ERR_ARG, "c2b_nurbs_curve_project: NULL argument");
-    char s0[32], s1[32], s2[32];
-    if (!isfinite(point[0]) || !isfinite(point[1]) || !isfinite(point[2]))
-        return c2b_error_set(err, C2B_ERR_ARG, "projection: point (%s, %s, %s) is not finite",
-                             nb_num(point[0], s0, sizeof s0), nb_num(point[1], s1, sizeof s1),
-                             nb_num(point[2], s2, sizeof s2));
-    const nb_dir *d = &c->d;
-    int per = NB_PROJ_PER_SPAN;
-    long cnt = nb_samples(d, per, NULL);
-    while (per > 1 && cnt > NB_PROJ_MAX_GRID)
-        cnt = nb_samples(d, --per, NULL);
-    double best[NB_PROJ_CANDIDATES], par[NB_PROJ_CANDIDATES][2];
-    for (int i = 0; i < NB_PROJ_CANDIDATES; i++) {
-        best[i] = INFINITY;
-        par[i][0] = par[i][1] = nb_dom0(d);
-    }
-    for (int i = d->p; i < d->nw; i++) {
-        double a = d->U[i], b = d->U[i + 1];
-        if (!(b > a))
-            continue;
-        for (int j = 0; j < per; j++) {
-            double tt = a + (b - a) * j / per, D[3];
-            nb_curve_eval_raw(c, tt, 0, D);
-            nb_keep(best, par, NB_PROJ_CANDIDATES, nb_dist2(D, point), tt, 0.0);
-        }
-    }
-    if (!d->periodic) {
-        double D[3];
-        nb_curve_eval_raw(c, nb_dom1(d), 0, D);
-        nb_keep(best, par, NB_PROJ_CANDIDATES, nb_dist2(D, point), nb_dom1(d), 0.0);
-    }
-    double bt = par[0][0], bf = INFINITY;
-    for (int i = 0; i < NB_PROJ_CANDIDATES; i++) {
-        if (!isfinite(best[i]))
-            break;
-        double tt = par[i][0], f;
-        nb_curve_newton(c, point, &tt, &f);
-        if (f < bf) {
-            bf = f;
-            bt = tt;
-        }
-    }
-    *t = bt;
-    if (dist)
-        *dist = sqrt(bf);
-    return isfinite(bf) ? C2B_OK
-                        : c2b_error_set(err, C2B_ERR_NUMERIC, "projection: no finite distance");
+    nb_target g = {1, &c->d, c, NULL};
+    return nb_project(&g, point, t, dist, err);
+}
+
+c2b_status c2b_nurbs_surface_project(const c2b_nurbs_surface *s, const double *point,
+                                     double *uv, double *dist, c2b_error *err)
+{
+    if (!s || !point || !uv)
+        return c2b_error_set(err, C2B_ERR_ARG, "c2b_nurbs_surface_project: NULL argument");
+    nb_target g = {2, s->d, NULL, s};
+    return nb_project(&g, point, uv, dist, err);
 }
 
 /* ---- surfaces ----------------------------------------------------------------------------- */
@@ -1515,164 +1609,4 @@ fail:
     free(P);
     return c2b_error_set(err, st, st == C2B_ERR_NOMEM ? "degree elevation: out of memory"
                                                        : "degree elevation: internal inconsistency");
-}
-
-/* Newton on f(u, v) = |S(u, v) - P|^2 / 2 with the full Hessian
- *   H = [Su.Su + r.Suu, Su.Sv + r.Suv; Su.Sv + r.Suv, Sv.Sv + r.Svv],  r = S - P,
- * a Gauss-Newton fallback where H is not positive definite, bound handling by fixing a
- * clamped parameter whose gradient points outward, and a halving line search. */
-static void nb_surface_newton(const c2b_nurbs_surface *s, const double *P, double *uv, double *fp)
-{
-    const nb_dir *d = s->d;
-    double len[2] = {nb_dom1(&d[0]) - nb_dom0(&d[0]), nb_dom1(&d[1]) - nb_dom0(&d[1])};
-    double skl[3 * 3 * 3];
-    double x[2] = {uv[0], uv[1]};
-    nb_surface_eval_raw(s, x[0], x[1], 2, 2, 2, skl);
-    double f = nb_dist2(skl, P);
-    for (int it = 0; it < NB_PROJ_MAX_ITER; it++) {
-        const double *S = skl, *Su = skl + 3 * 3, *Sv = skl + 1 * 3, *Suu = skl + 6 * 3,
-                     *Suv = skl + 4 * 3, *Svv = skl + 2 * 3;
-        double r[3] = {S[0] - P[0], S[1] - P[1], S[2] - P[2]};
-        double g[2] = {nb_dot3(r, Su), nb_dot3(r, Sv)};
-        double J[2][2] = {{nb_dot3(Su, Su), nb_dot3(Su, Sv)}, {nb_dot3(Su, Sv), nb_dot3(Sv, Sv)}};
-        double H[2][2] = {{J[0][0] + nb_dot3(r, Suu), J[0][1] + nb_dot3(r, Suv)},
-                          {J[1][0] + nb_dot3(r, Suv), J[1][1] + nb_dot3(r, Svv)}};
-        int freev[2];
-        for (int k = 0; k < 2; k++) {
-            freev[k] = 1;
-            if (!d[k].periodic && ((x[k] <= nb_dom0(&d[k]) && g[k] > 0) ||
-                                   (x[k] >= nb_dom1(&d[k]) && g[k] < 0)))
-                freev[k] = 0;
-        }
-        double step[2] = {0.0, 0.0};
-        if (freev[0] && freev[1]) {
-            double det = H[0][0] * H[1][1] - H[0][1] * H[1][0];
-            const double (*M)[2] = H;
-            if (!(H[0][0] > 0 && det > 0)) {
-                M = J;
-                det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-            }
-            if (det > 1e-300 && det > 1e-14 * M[0][0] * M[1][1]) {
-                step[0] = -(M[1][1] * g[0] - M[0][1] * g[1]) / det;
-                step[1] = -(M[0][0] * g[1] - M[1][0] * g[0]) / det;
-            } else {
-                /* singular: move along the better-conditioned direction only */
-                int k = J[0][0] >= J[1][1] ? 0 : 1;
-                freev[1 - k] = 0;
-            }
-        }
-        if (freev[0] != freev[1]) {
-            int k = freev[0] ? 0 : 1;
-            double h = H[k][k] > 0 ? H[k][k] : J[k][k];
-            if (h > 0)
-                step[k] = -g[k] / h;
-        }
-        if (step[0] == 0 && step[1] == 0)
-            break;
-        for (int k = 0; k < 2; k++)
-            if (fabs(step[k]) > 0.5 * len[k])
-                step[k] = step[k] > 0 ? 0.5 * len[k] : -0.5 * len[k];
-        double xn[2] = {x[0], x[1]}, fn = f, skn[3 * 3 * 3];
-        int accepted = 0;
-        if (fabs(step[0]) <= NB_PROJ_LOCAL * len[0] && fabs(step[1]) <= NB_PROJ_LOCAL * len[1]) {
-            for (int k = 0; k < 2; k++)
-                xn[k] = nb_move(&d[k], x[k] + step[k]);
-            nb_surface_eval_raw(s, xn[0], xn[1], 2, 2, 2, skn);
-            fn = nb_dist2(skn, P);
-            accepted = 1;
-        } else {
-            double lam = 1.0;
-            for (int ls = 0; ls < 60; ls++, lam *= 0.5) {
-                for (int k = 0; k < 2; k++)
-                    xn[k] = nb_move(&d[k], x[k] + lam * step[k]);
-                nb_surface_eval_raw(s, xn[0], xn[1], 2, 2, 2, skn);
-                fn = nb_dist2(skn, P);
-                if (fn < f) {
-                    accepted = 1;
-                    break;
-                }
-            }
-        }
-        if (!accepted)
-            break;
-        int small = 1;
-        for (int k = 0; k < 2; k++) {
-            double moved = fabs(xn[k] - x[k]);
-            if (d[k].periodic && moved > 0.5 * len[k])
-                moved = len[k] - moved;
-            if (moved > NB_PROJ_STEP_TOL * len[k])
-                small = 0;
-        }
-        x[0] = xn[0];
-        x[1] = xn[1];
-        f = fn;
-        memcpy(skl, skn, sizeof skl);
-        if (small)
-            break;
-    }
-    uv[0] = x[0];
-    uv[1] = x[1];
-    *fp = f;
-}
-
-c2b_status c2b_nurbs_surface_project(const c2b_nurbs_surface *s, const double *point,
-                                     double *uv, double *dist, c2b_error *err)
-{
-    if (!s || !point || !uv)
-        return c2b_error_set(err, C2B_ERR_ARG, "c2b_nurbs_surface_project: NULL argument");
-    char s0[32], s1[32], s2[32];
-    if (!isfinite(point[0]) || !isfinite(point[1]) || !isfinite(point[2]))
-        return c2b_error_set(err, C2B_ERR_ARG, "projection: point (%s, %s, %s) is not finite",
-                             nb_num(point[0], s0, sizeof s0), nb_num(point[1], s1, sizeof s1),
-                             nb_num(point[2], s2, sizeof s2));
-    const nb_dir *d = s->d;
-    int per[2] = {NB_PROJ_PER_SPAN, NB_PROJ_PER_SPAN};
-    long cnt[2] = {nb_samples(&d[0], per[0], NULL), nb_samples(&d[1], per[1], NULL)};
-    while (cnt[0] * cnt[1] > NB_PROJ_MAX_GRID && (per[0] > 1 || per[1] > 1)) {
-        int k = (per[0] > 1 && (cnt[0] >= cnt[1] || per[1] == 1)) ? 0 : 1;
-        cnt[k] = nb_samples(&d[k], --per[k], NULL);
-    }
-    /* with one sample per span and still too many, stride over the samples */
-    long stride[2] = {1, 1};
-    for (int k = 0; k < 2; k++)
-        while ((cnt[0] / stride[0] + 1) * (cnt[1] / stride[1] + 1) > NB_PROJ_MAX_GRID &&
-               cnt[k] / stride[k] > 1000)
-            stride[k] *= 2;
-    double *su = malloc((size_t)(cnt[0] + cnt[1]) * sizeof(double));
-    if (!su)
-        return c2b_error_set(err, C2B_ERR_NOMEM, "projection: out of memory");
-    double *sv = su + cnt[0];
-    nb_samples(&d[0], per[0], su);
-    nb_samples(&d[1], per[1], sv);
-    double best[NB_PROJ_CANDIDATES], par[NB_PROJ_CANDIDATES][2];
-    for (int i = 0; i < NB_PROJ_CANDIDATES; i++) {
-        best[i] = INFINITY;
-        par[i][0] = nb_dom0(&d[0]);
-        par[i][1] = nb_dom0(&d[1]);
-    }
-    double skl[3];
-    for (long i = 0; i < cnt[0]; i += stride[0])
-        for (long j = 0; j < cnt[1]; j += stride[1]) {
-            nb_surface_eval_raw(s, su[i], sv[j], 0, 0, 0, skl);
-            nb_keep(best, par, NB_PROJ_CANDIDATES, nb_dist2(skl, point), su[i], sv[j]);
-        }
-    free(su);
-    double bu[2] = {par[0][0], par[0][1]}, bf = INFINITY;
-    for (int i = 0; i < NB_PROJ_CANDIDATES; i++) {
-        if (!isfinite(best[i]))
-            break;
-        double x[2] = {par[i][0], par[i][1]}, f;
-        nb_surface_newton(s, point, x, &f);
-        if (f < bf) {
-            bf = f;
-            bu[0] = x[0];
-            bu[1] = x[1];
-        }
-    }
-    uv[0] = bu[0];
-    uv[1] = bu[1];
-    if (dist)
-        *dist = sqrt(bf);
-    return isfinite(bf) ? C2B_OK
-                        : c2b_error_set(err, C2B_ERR_NUMERIC, "projection: no finite distance");
 }

@@ -112,9 +112,9 @@ c2b_status c2b_nurbs_curve_insert_knot(c2b_nurbs_curve *c, double t, int times, 
 c2b_status c2b_nurbs_curve_elevate(c2b_nurbs_curve *c, int times, c2b_error *err);
 
 /**
- * Closest point: the parameter t minimising |C(t) - point| (global search over spans,
- * then Newton), with the distance.
- * @return C2B_OK; C2B_ERR_ARG for non-finite input.
+ * Closest point: the parameter t minimising |C(t) - point|, with the distance. The same
+ * method as c2b_nurbs_surface_project's in one direction. dist may be NULL.
+ * @return C2B_OK; C2B_ERR_ARG for NULL arguments or a non-finite point; C2B_ERR_NOMEM.
  */
 c2b_status c2b_nurbs_curve_project(const c2b_nurbs_curve *c, const double *point, double *t,
                                    double *dist, c2b_error *err);
