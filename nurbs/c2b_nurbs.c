@@ -1008,6 +1008,87 @@ static c2b_status nb_curve_install(c2b_nurbs_curve *c, nb_dir *d, double *P)
     return C2B_OK;
 }
 
+/* Distinct homogeneous poles of direction dir as items: item i (i < n_dir) holds the
+ * stored (unwrapped) poles of the other direction, D = 4 * nw_other. */
+static double *nb_surface_items(const c2b_nurbs_surface *s, int dir, size_t *D)
+{
+    size_t nwu = (size_t)s->d[0].nw, nwv = (size_t)s->d[1].nw;
+    size_t n = (size_t)s->d[dir].n;
+    size_t other = dir == 0 ? nwv : nwu;
+    *D = 4 * other;
+    double *P = malloc(n * *D * sizeof(double));
+    if (!P)
+        return NULL;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < other; j++) {
+            size_t src = dir == 0 ? i * nwv + j : j * nwv + i;
+            memcpy(P + i * *D + 4 * j, s->pw + 4 * src, 4 * sizeof(double));
+        }
+    return P;
+}
+
+static c2b_status nb_surface_install(c2b_nurbs_surface *s, int dir, nb_dir *d, double *P, size_t D)
+{
+    size_t nwd = (size_t)d->nw, other = D / 4;
+    size_t cnt = 4 * nwd * other;
+    double *pw = malloc(cnt * sizeof(double));
+    double *cart = malloc(cnt * sizeof(double));
+    if (!pw || !cart) {
+        free(pw);
+        free(cart);
+        return C2B_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < nwd; i++)
+        for (size_t j = 0; j < other; j++) {
+            size_t dst = dir == 0 ? i * other + j : j * nwd + i;
+            memcpy(pw + 4 * dst, P + (i % (size_t)d->n) * D + 4 * j, 4 * sizeof(double));
+        }
+    nb_from_homog(pw, cart, cnt / 4, s->rational ? 0.0 : s->cart[3]);
+    free(s->pw);
+    free(s->cart);
+    free(s->d[dir].U);
+    s->pw = pw;
+    s->cart = cart;
+    s->d[dir] = *d;
+    s->rational = nb_is_rational(cart, cnt / 4);
+    return C2B_OK;
+}
+
+/* The object a knot insertion or degree elevation changes: a curve (c), or direction dir
+ * of a surface (s). */
+typedef struct nb_owner {
+    c2b_nurbs_curve *c;
+    c2b_nurbs_surface *s;
+    int dir;
+} nb_owner;
+
+/* `times` insertions of knot t into o's direction or, when `elevate`, `times` degree
+ * elevations of it (after clamping), made on copies of its knots and distinct poles and
+ * installed in o only when all succeed: on failure o is unchanged. Arguments checked. */
+static c2b_status nb_edit(nb_owner o, int elevate, double t, int times, c2b_error *err)
+{
+    const nb_dir *src = o.c ? &o.c->d : &o.s->d[o.dir];
+    size_t D = 4;
+    double *P = o.c ? nb_curve_items(o.c) : nb_surface_items(o.s, o.dir, &D);
+    nb_dir d = *src;
+    d.U = nb_knots_dup(src->U, src->nk);
+    c2b_status st = !d.U || !P ? C2B_ERR_NOMEM : C2B_OK;
+    if (!st && elevate && !(st = nb_clamp(&d, &P, D)))
+        st = nb_elevate_clamped(&d, &P, D, times);
+    for (int r = 0; !st && !elevate && r < times; r++)
+        st = nb_insert_once(&d, &P, D, t);
+    if (!st)
+        st = o.c ? nb_curve_install(o.c, &d, P) : nb_surface_install(o.s, o.dir, &d, P, D);
+    free(P);
+    if (!st)
+        return C2B_OK;
+    free(d.U);
+    if (!elevate)
+        return c2b_error_set(err, st, "knot insertion: out of memory");
+    return c2b_error_set(err, st, st == C2B_ERR_NOMEM ? "degree elevation: out of memory"
+                                                       : "degree elevation: internal inconsistency");
+}
+
 c2b_status c2b_nurbs_curve_insert_knot(c2b_nurbs_curve *c, double t, int times, c2b_error *err)
 {
     if (!c)
@@ -1016,24 +1097,7 @@ c2b_status c2b_nurbs_curve_insert_knot(c2b_nurbs_curve *c, double t, int times, 
     c2b_status st = nb_check_insert(&c->d, t, times, &tt, "t", err);
     if (st || times == 0)
         return st;
-    nb_dir d = c->d;
-    d.U = nb_knots_dup(c->d.U, c->d.nk);
-    double *P = nb_curve_items(c);
-    if (!d.U || !P) {
-        st = C2B_ERR_NOMEM;
-        goto fail;
-    }
-    for (int r = 0; r < times; r++)
-        if ((st = nb_insert_once(&d, &P, 4, tt)))
-            goto fail;
-    if ((st = nb_curve_install(c, &d, P)))
-        goto fail;
-    free(P);
-    return C2B_OK;
-fail:
-    free(d.U);
-    free(P);
-    return c2b_error_set(err, st, "knot insertion: out of memory");
+    return nb_edit((nb_owner){c, NULL, 0}, 0, tt, times, err);
 }
 
 c2b_status c2b_nurbs_curve_elevate(c2b_nurbs_curve *c, int times, c2b_error *err)
@@ -1043,24 +1107,7 @@ c2b_status c2b_nurbs_curve_elevate(c2b_nurbs_curve *c, int times, c2b_error *err
     c2b_status st = nb_check_elevate(&c->d, times, "curve", err);
     if (st || times == 0)
         return st;
-    nb_dir d = c->d;
-    d.U = nb_knots_dup(c->d.U, c->d.nk);
-    double *P = nb_curve_items(c);
-    if (!d.U || !P) {
-        st = C2B_ERR_NOMEM;
-        goto fail;
-    }
-    if ((st = nb_clamp(&d, &P, 4)) || (st = nb_elevate_clamped(&d, &P, 4, times)))
-        goto fail;
-    if ((st = nb_curve_install(c, &d, P)))
-        goto fail;
-    free(P);
-    return C2B_OK;
-fail:
-    free(d.U);
-    free(P);
-    return c2b_error_set(err, st, st == C2B_ERR_NOMEM ? "degree elevation: out of memory"
-                                                       : "degree elevation: internal inconsistency");
+    return nb_edit((nb_owner){c, NULL, 0}, 1, 0.0, times, err);
 }
 
 /* ---- projection -------------------------------------------------------------------------- */
@@ -1505,52 +1552,6 @@ c2b_status c2b_nurbs_surface_eval(const c2b_nurbs_surface *s, double u, double v
     return C2B_OK;
 }
 
-/* Distinct homogeneous poles of direction dir as items: item i (i < n_dir) holds the
- * stored (unwrapped) poles of the other direction, D = 4 * nw_other. */
-static double *nb_surface_items(const c2b_nurbs_surface *s, int dir, size_t *D)
-{
-    size_t nwu = (size_t)s->d[0].nw, nwv = (size_t)s->d[1].nw;
-    size_t n = (size_t)s->d[dir].n;
-    size_t other = dir == 0 ? nwv : nwu;
-    *D = 4 * other;
-    double *P = malloc(n * *D * sizeof(double));
-    if (!P)
-        return NULL;
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < other; j++) {
-            size_t src = dir == 0 ? i * nwv + j : j * nwv + i;
-            memcpy(P + i * *D + 4 * j, s->pw + 4 * src, 4 * sizeof(double));
-        }
-    return P;
-}
-
-static c2b_status nb_surface_install(c2b_nurbs_surface *s, int dir, nb_dir *d, double *P, size_t D)
-{
-    size_t nwd = (size_t)d->nw, other = D / 4;
-    size_t cnt = 4 * nwd * other;
-    double *pw = malloc(cnt * sizeof(double));
-    double *cart = malloc(cnt * sizeof(double));
-    if (!pw || !cart) {
-        free(pw);
-        free(cart);
-        return C2B_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < nwd; i++)
-        for (size_t j = 0; j < other; j++) {
-            size_t dst = dir == 0 ? i * other + j : j * nwd + i;
-            memcpy(pw + 4 * dst, P + (i % (size_t)d->n) * D + 4 * j, 4 * sizeof(double));
-        }
-    nb_from_homog(pw, cart, cnt / 4, s->rational ? 0.0 : s->cart[3]);
-    free(s->pw);
-    free(s->cart);
-    free(s->d[dir].U);
-    s->pw = pw;
-    s->cart = cart;
-    s->d[dir] = *d;
-    s->rational = nb_is_rational(cart, cnt / 4);
-    return C2B_OK;
-}
-
 c2b_status c2b_nurbs_surface_insert_knot(c2b_nurbs_surface *s, int dir, double t, int times,
                                          c2b_error *err)
 {
@@ -1561,25 +1562,7 @@ c2b_status c2b_nurbs_surface_insert_knot(c2b_nurbs_surface *s, int dir, double t
     c2b_status st = nb_check_insert(&s->d[dir], t, times, &tt, dir ? "v" : "u", err);
     if (st || times == 0)
         return st;
-    size_t D;
-    nb_dir d = s->d[dir];
-    d.U = nb_knots_dup(s->d[dir].U, s->d[dir].nk);
-    double *P = nb_surface_items(s, dir, &D);
-    if (!d.U || !P) {
-        st = C2B_ERR_NOMEM;
-        goto fail;
-    }
-    for (int r = 0; r < times; r++)
-        if ((st = nb_insert_once(&d, &P, D, tt)))
-            goto fail;
-    if ((st = nb_surface_install(s, dir, &d, P, D)))
-        goto fail;
-    free(P);
-    return C2B_OK;
-fail:
-    free(d.U);
-    free(P);
-    return c2b_error_set(err, st, "knot insertion: out of memory");
+    return nb_edit((nb_owner){NULL, s, dir}, 0, tt, times, err);
 }
 
 c2b_status c2b_nurbs_surface_elevate(c2b_nurbs_surface *s, int dir, int times, c2b_error *err)
@@ -1590,23 +1573,5 @@ c2b_status c2b_nurbs_surface_elevate(c2b_nurbs_surface *s, int dir, int times, c
     c2b_status st = nb_check_elevate(&s->d[dir], times, dir ? "direction (v)" : "direction (u)", err);
     if (st || times == 0)
         return st;
-    size_t D;
-    nb_dir d = s->d[dir];
-    d.U = nb_knots_dup(s->d[dir].U, s->d[dir].nk);
-    double *P = nb_surface_items(s, dir, &D);
-    if (!d.U || !P) {
-        st = C2B_ERR_NOMEM;
-        goto fail;
-    }
-    if ((st = nb_clamp(&d, &P, D)) || (st = nb_elevate_clamped(&d, &P, D, times)))
-        goto fail;
-    if ((st = nb_surface_install(s, dir, &d, P, D)))
-        goto fail;
-    free(P);
-    return C2B_OK;
-fail:
-    free(d.U);
-    free(P);
-    return c2b_error_set(err, st, st == C2B_ERR_NOMEM ? "degree elevation: out of memory"
-                                                       : "degree elevation: internal inconsistency");
+    return nb_edit((nb_owner){NULL, s, dir}, 1, 0.0, times, err);
 }
