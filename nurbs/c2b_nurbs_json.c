@@ -37,22 +37,24 @@ static const char *nj_self(const char *field, const char *dflt)
     return field && *field ? field : dflt;
 }
 
-/* Reject keys outside `allowed` and duplicate keys. */
-static c2b_status nj_check_keys(const cJSON *obj, const char *self, const char *const *allowed,
-                                c2b_error *err)
+/* The values of obj's `keys` (a NULL-terminated list) in items[i] (NULL where absent).
+ * A key outside the list, a duplicate key, and a missing one among the first `required`
+ * are errors naming the object (self) and the key. */
+static c2b_status nj_keys(const cJSON *obj, const char *self, const char *const *keys,
+                          int required, const cJSON **items, c2b_error *err)
 {
     for (const cJSON *x = obj->child; x; x = x->next) {
         const char *k = x->string ? x->string : "";
         int ok = 0;
-        for (int i = 0; allowed[i]; i++)
-            if (strcmp(k, allowed[i]) == 0)
+        for (int i = 0; keys[i]; i++)
+            if (strcmp(k, keys[i]) == 0)
                 ok = 1;
         if (!ok) {
             char list[256] = "";
             size_t used = 0;
-            for (int i = 0; allowed[i] && used < sizeof list; i++)
+            for (int i = 0; keys[i] && used < sizeof list; i++)
                 used += (size_t)snprintf(list + used, sizeof list - used, "%s'%s'", i ? ", " : "",
-                                         allowed[i]);
+                                         keys[i]);
             return c2b_error_set(err, C2B_ERR_SPEC, "%s: unknown key '%s' (expected %s)", self, k,
                                  list);
         }
@@ -60,12 +62,12 @@ static c2b_status nj_check_keys(const cJSON *obj, const char *self, const char *
             if (y->string && strcmp(y->string, k) == 0)
                 return c2b_error_set(err, C2B_ERR_SPEC, "%s: duplicate key '%s'", self, k);
     }
+    for (int i = 0; keys[i]; i++) {
+        items[i] = cJSON_GetObjectItemCaseSensitive(obj, keys[i]);
+        if (!items[i] && i < required)
+            return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing key '%s'", self, keys[i]);
+    }
     return C2B_OK;
-}
-
-static c2b_status nj_missing(const char *self, const char *key, c2b_error *err)
-{
-    return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing key '%s'", self, key);
 }
 
 /* A degree: an integer-valued number (range checked by the create functions). */
@@ -158,23 +160,11 @@ c2b_status c2b_nurbs_surface_from_json(const cJSON *obj, const char *field,
                              "\"knots_v\": [...], \"poles\": [[[x, y, z, w], ...], ...]}",
                              self);
     static const char *const keys[] = {"degree", "knots_u", "knots_v", "poles", "periodic", NULL};
-    c2b_status st = nj_check_keys(obj, self, keys, err);
+    const cJSON *it[5];
+    c2b_status st = nj_keys(obj, self, keys, 4, it, err);
     if (st)
         return st;
-    const cJSON *jd = cJSON_GetObjectItemCaseSensitive(obj, "degree");
-    const cJSON *jku = cJSON_GetObjectItemCaseSensitive(obj, "knots_u");
-    const cJSON *jkv = cJSON_GetObjectItemCaseSensitive(obj, "knots_v");
-    const cJSON *jp = cJSON_GetObjectItemCaseSensitive(obj, "poles");
-    const cJSON *jper = cJSON_GetObjectItemCaseSensitive(obj, "periodic");
-    if (!jd)
-        return nj_missing(self, "degree", err);
-    if (!jku)
-        return nj_missing(self, "knots_u", err);
-    if (!jkv)
-        return nj_missing(self, "knots_v", err);
-    if (!jp)
-        return nj_missing(self, "poles", err);
-
+    const cJSON *jd = it[0], *jku = it[1], *jkv = it[2], *jp = it[3], *jper = it[4];
     int deg[2] = {0, 0}, per[2] = {0, 0};
     nj_path(path, sizeof path, field, "degree");
     if (!cJSON_IsArray(jd) || cJSON_GetArraySize(jd) != 2)
@@ -260,19 +250,11 @@ c2b_status c2b_nurbs_curve_from_json(const cJSON *obj, const char *field, c2b_nu
                              "\"poles\": [[x, y, z, w], ...]}",
                              self);
     static const char *const keys[] = {"degree", "knots", "poles", "periodic", NULL};
-    c2b_status st = nj_check_keys(obj, self, keys, err);
+    const cJSON *it[4];
+    c2b_status st = nj_keys(obj, self, keys, 3, it, err);
     if (st)
         return st;
-    const cJSON *jd = cJSON_GetObjectItemCaseSensitive(obj, "degree");
-    const cJSON *jk = cJSON_GetObjectItemCaseSensitive(obj, "knots");
-    const cJSON *jp = cJSON_GetObjectItemCaseSensitive(obj, "poles");
-    const cJSON *jper = cJSON_GetObjectItemCaseSensitive(obj, "periodic");
-    if (!jd)
-        return nj_missing(self, "degree", err);
-    if (!jk)
-        return nj_missing(self, "knots", err);
-    if (!jp)
-        return nj_missing(self, "poles", err);
+    const cJSON *jd = it[0], *jk = it[1], *jp = it[2], *jper = it[3];
     int p = 0, per = 0;
     if ((st = nj_degree(jd, nj_path(path, sizeof path, field, "degree"), "an integer", &p, err)))
         return st;

@@ -1381,6 +1381,16 @@ static void test_json(void)
     expect_err("JSON curve: pole", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err), &err,
                C2B_ERR_SPEC, "curves[1].poles[1]: expected [x, y, z, w] (4 numbers)");
     cJSON_Delete(jc);
+    jc = cJSON_Parse("{\"degree\": 1, \"poles\": [[0,0,0,1],[1,1,0,1]]}");
+    expect_err("JSON curve: missing knots", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err),
+               &err, C2B_ERR_SPEC, "curves[1]: missing key 'knots'");
+    cJSON_Delete(jc);
+    jc = cJSON_Parse("{\"degree\": 1, \"knots\": [0, 0, 1, 1], \"poles\": [[0,0,0,1],[1,1,0,1]],"
+                     " \"knot\": 2}");
+    expect_err("JSON curve: unknown key", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err),
+               &err, C2B_ERR_SPEC,
+               "curves[1]: unknown key 'knot' (expected 'degree', 'knots', 'poles', 'periodic')");
+    cJSON_Delete(jc);
 
     /* round trips: random full-precision values, a periodic surface, a surface made by
      * knot insertion, through memory and through printed text */
