@@ -37,12 +37,18 @@ static const char *nj_self(const char *field, const char *dflt)
     return field && *field ? field : dflt;
 }
 
-/* The values of obj's `keys` (a NULL-terminated list) in items[i] (NULL where absent).
- * A key outside the list, a duplicate key, and a missing one among the first `required`
- * are errors naming the object (self) and the key. */
-static c2b_status nj_keys(const cJSON *obj, const char *self, const char *const *keys,
-                          int required, const cJSON **items, c2b_error *err)
+/* The values of the object obj's `keys` (a NULL-terminated list) in items[i] (NULL where
+ * absent). A missing obj, one that is no object (the message then shows `form`), a key
+ * outside the list, a duplicate key, and a missing one among the first `required` are
+ * errors naming the object (self) and the key. */
+static c2b_status nj_keys(const cJSON *obj, const char *self, const char *form,
+                          const char *const *keys, int required, const cJSON **items,
+                          c2b_error *err)
 {
+    if (!obj)
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing", self);
+    if (!cJSON_IsObject(obj))
+        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an object %s", self, form);
     for (const cJSON *x = obj->child; x; x = x->next) {
         const char *k = x->string ? x->string : "";
         int ok = 0;
@@ -152,16 +158,12 @@ c2b_status c2b_nurbs_surface_from_json(const cJSON *obj, const char *field,
     if (!out)
         return c2b_error_set(err, C2B_ERR_ARG, "%s: NULL output pointer", self);
     *out = NULL;
-    if (!obj)
-        return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing", self);
-    if (!cJSON_IsObject(obj))
-        return c2b_error_set(err, C2B_ERR_SPEC,
-                             "%s: expected an object {\"degree\": [p, q], \"knots_u\": [...], "
-                             "\"knots_v\": [...], \"poles\": [[[x, y, z, w], ...], ...]}",
-                             self);
     static const char *const keys[] = {"degree", "knots_u", "knots_v", "poles", "periodic", NULL};
     const cJSON *it[5];
-    c2b_status st = nj_keys(obj, self, keys, 4, it, err);
+    c2b_status st = nj_keys(obj, self,
+                            "{\"degree\": [p, q], \"knots_u\": [...], \"knots_v\": [...], "
+                            "\"poles\": [[[x, y, z, w], ...], ...]}",
+                            keys, 4, it, err);
     if (st)
         return st;
     const cJSON *jd = it[0], *jku = it[1], *jkv = it[2], *jp = it[3], *jper = it[4];
@@ -242,16 +244,11 @@ c2b_status c2b_nurbs_curve_from_json(const cJSON *obj, const char *field, c2b_nu
     if (!out)
         return c2b_error_set(err, C2B_ERR_ARG, "%s: NULL output pointer", self);
     *out = NULL;
-    if (!obj)
-        return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing", self);
-    if (!cJSON_IsObject(obj))
-        return c2b_error_set(err, C2B_ERR_SPEC,
-                             "%s: expected an object {\"degree\": p, \"knots\": [...], "
-                             "\"poles\": [[x, y, z, w], ...]}",
-                             self);
     static const char *const keys[] = {"degree", "knots", "poles", "periodic", NULL};
     const cJSON *it[4];
-    c2b_status st = nj_keys(obj, self, keys, 3, it, err);
+    c2b_status st = nj_keys(obj, self,
+                            "{\"degree\": p, \"knots\": [...], \"poles\": [[x, y, z, w], ...]}",
+                            keys, 3, it, err);
     if (st)
         return st;
     const cJSON *jd = it[0], *jk = it[1], *jp = it[2], *jper = it[3];

@@ -1381,6 +1381,14 @@ static void test_json(void)
     expect_err("JSON curve: pole", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err), &err,
                C2B_ERR_SPEC, "curves[1].poles[1]: expected [x, y, z, w] (4 numbers)");
     cJSON_Delete(jc);
+    jc = cJSON_Parse("[1, 2]");
+    expect_err("JSON curve: not an object", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err),
+               &err, C2B_ERR_SPEC,
+               "curves[1]: expected an object {\"degree\": p, \"knots\": [...], \"poles\": "
+               "[[x, y, z, w], ...]}");
+    cJSON_Delete(jc);
+    expect_err("JSON curve: missing", c2b_nurbs_curve_from_json(NULL, "curves[1]", &c, &err), &err,
+               C2B_ERR_SPEC, "curves[1]: missing");
     jc = cJSON_Parse("{\"degree\": 1, \"poles\": [[0,0,0,1],[1,1,0,1]]}");
     expect_err("JSON curve: missing knots", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err),
                &err, C2B_ERR_SPEC, "curves[1]: missing key 'knots'");
