@@ -2899,16 +2899,55 @@ def test_distance_to_a_face_winding_round_its_seam():
 def test_a_cut_whose_pieces_overlap_says_so():
     """OCCT's general fuse cuts the 3-turn helical ridge's cylinder face (its domain
     spans 3.6 periods) along a helix midway between the ridge's turns into pieces
-    whose areas add up to more than the face's; fl._fused refuses them and says so."""
+    whose areas add up to more than the face's; fl._fused refuses them and says why:
+    the face spans 3.6 periods of its surface (22.6 / 2 pi)."""
     s, _ = shapes.helical_ridge()
     face = next(f for f in s.Faces if isinstance(f.Surface, Part.Cylinder))
+    u0, u1 = face.ParameterRange[:2]
+    assert (u1 - u0) / (2 * math.pi) == pytest.approx(3.6, abs=0.01)
     helix = Part.makeHelix(4, 16, 10)
     helix.translate(V(0, 0, -2))  # z = 4 theta / 2 pi - 2: midway between the turns
     m = re.fullmatch(r"OCCT's general fuse cut the face into pieces whose areas add up to "
-                     r"([0-9.]+), more than its ([0-9.]+), as where the face winds round "
-                     r"its surface's seam", fl._fused(face, helix.Edges, 1e-7))
+                     r"([0-9.]+), more than its ([0-9.]+): the face spans ([0-9.]+) periods "
+                     r"of its surface, winding round it \(as between the turns of a helical "
+                     r"ridge\), and OCCT's general fuse does not cut such a face",
+                     fl._fused(face, helix.Edges, 1e-7))
     assert m and float(m.group(1)) > 1.1 * float(m.group(2)) and \
         float(m.group(2)) == pytest.approx(face.Area, rel=1e-5)
+    assert m.group(3) == "3.6"
+
+
+@pytest.mark.parametrize("dv", [0.0, 1e-6, 1e-3, 0.1])
+def test_a_cut_along_a_c0_knot_line_says_so(dv):
+    """The face of a torus scaled 1.5 x 1.2 x 1 by transformGeometry, at z = 0.5 turned
+    20 degrees, on a plate (the part whose fillet at R = 0.5 keeps OCCT's faces), rebased:
+    a rational B-spline of degree 2 in v with knots of multiplicity 2, so only C0 along
+    them, one at v = 2 pi. Cut along the iso-line v = 2 pi + dv, OCCT's general fuse
+    loses the face beyond it when dv is within 1e-3, and fl._fused says the cut runs
+    along that knot line; 0.1 from it, the face is cut in two pieces that make it up."""
+    s, _ = shapes.scaled_torus_on_plate((1.5, 1.2, 1.0), 0.5, 20.0)
+    face = fl._rebased(next(f for f in s.Faces
+                            if isinstance(f.Surface, Part.BSplineSurface)))
+    surface = face.Surface
+    knot = surface.getVKnots().index(pytest.approx(2 * math.pi, abs=1e-12))
+    assert surface.VDegree == 2 and surface.getVMultiplicities()[knot] == 2
+    v = 2 * math.pi + dv
+    iso = Part.Geom2d.Line2dSegment(FreeCAD.Base.Vector2d(0, v),
+                                    FreeCAD.Base.Vector2d(2 * math.pi, v)).toShape(surface)
+    got = fl._fused(face, [iso], 5.7e-6)
+    if dv < 0.01:
+        m = re.fullmatch(r"OCCT's general fuse lost part of the face \(([0-9.]+) of "
+                         r"([0-9.]+)\), cutting along a knot line where its B-spline "
+                         r"surface is only C0: the trimline edge on it runs along "
+                         r"v = 6\.28319 \(within (.+)\)", got)
+        assert m, got
+        assert float(m.group(1)) < 0.2 * float(m.group(2))
+        assert float(m.group(3)) == pytest.approx(dv, abs=1e-9)
+    else:
+        assert not isinstance(got, str), got
+        assert len(got) == 2
+        # OCCT's areas on this C0 surface agree to 1.3e-4 (fl._amiss allows 1e-3)
+        assert sum(f.Area for f in got) == pytest.approx(face.Area, rel=1e-3)
 
 
 def test_a_one_turn_helical_ridge_is_g2():

@@ -49,7 +49,7 @@ from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
 from .surface import (Frame, angle, face_distance, frame_at_point, mesh_area, off_surface,
-                      only_c0, project)
+                      only_c0, periods, project)
 from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -707,7 +707,7 @@ def _fused(face, tools, tol, areas=None):
         pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
     except Exception as ex:  # FreeCAD's Part and OCCT errors come in several classes
         return occt_message(ex)
-    wrong = _amiss(face, pieces, areas)
+    wrong = _amiss(face, pieces, areas, tools)
     if wrong:
         return wrong
     edges = [e for f in pieces for e in f.Edges]
@@ -727,10 +727,13 @@ def _ordinal(n):
     return "%d%s" % (n, suffix)
 
 
-def _amiss(face, pieces, areas=None):
-    """What is wrong (str) with `pieces` as the pieces of face cut (_fused), judged by
-    their areas: None when they add up to the face's (they agree to about 1e-6; 1e-3
-    is allowed). Where OCCT's areas are not to be trusted (surface.only_c0),
+def _amiss(face, pieces, areas=None, tools=()):
+    """What is wrong (str) with `pieces` as the pieces of face cut (_fused) along the
+    edges `tools`, judged by their areas: None when they add up to the face's (they
+    agree to about 1e-6; 1e-3 is allowed). Where the cause is known, it is named: a
+    tool along a C0 knot line of the face's surface (_along_c0_knot), or a face that
+    winds round its surface (surface.periods); else the message says where such
+    losses were seen. Where OCCT's areas are not to be trusted (surface.only_c0),
     the areas of triangulations with one deflection, 2e-4 of the face's size, are
     compared instead: they agree to 1.2e-5 on the cap of a toNurbs() sphere turned on
     its side, cut along its fillet, where OCCT's areas of the pieces add up to 221.03
@@ -747,13 +750,54 @@ def _amiss(face, pieces, areas=None):
             areas[id(face)] = mesh_area(face, d)
         area, whole = sum(mesh_area(f, d) for f in pieces), areas[id(face)]
     if area < (1.0 - 1e-3) * whole:
-        return ("OCCT's general fuse lost part of the face (%.6g of %.6g), as where a "
-                "trimline crosses the face's seam" % (area, whole))
+        return ("OCCT's general fuse lost part of the face (%.6g of %.6g)%s"
+                % (area, whole, _along_c0_knot(face, tools)
+                   or ", as where a trimline crosses the face's seam"))
     if area > (1.0 + 1e-3) * whole:
+        turns = periods(face)
         return ("OCCT's general fuse cut the face into pieces whose areas add up to "
-                "%.6g, more than its %.6g, as where the face winds round its surface's "
-                "seam" % (area, whole))
+                "%.6g, more than its %.6g%s" % (area, whole, (
+                    ": the face spans %.2g periods of its surface, winding round it (as "
+                    "between the turns of a helical ridge), and OCCT's general fuse does "
+                    "not cut such a face" % turns) if turns > 1.0 + 1e-9 else
+                    ", as where the face winds round its surface's seam"))
     return None
+
+
+def _along_c0_knot(face, tools):
+    """', cutting along a knot line where its B-spline surface is only C0: the 1st of
+    the 2 trimline edges on it runs along v = 6.28319 (within 3.1e-09)' when one of
+    `tools` lies along an inner knot line of face's B-spline surface whose multiplicity
+    is at least the degree (its points' parameters all lie within 1e-3 times the
+    length of the knot vector's range from the knot); else ''. Cut along such a line,
+    OCCT's general fuse loses the face beyond it: the face of a torus scaled 1.5 x 1.2
+    x 1 by transformGeometry (a rational B-spline, C0 at its knots), rebased, cut along
+    the iso-line at its knot v = 2 pi, keeps 30.2 of 356.0 mm2, as it does 1e-6 and
+    1e-3 from it; 0.1 from it, it cuts the face in two."""
+    s = face.Surface
+    if not isinstance(s, Part.BSplineSurface):
+        return ""
+    directions = ((s.getUKnots(), s.getUMultiplicities(), s.UDegree, s.isUPeriodic()),
+                  (s.getVKnots(), s.getVMultiplicities(), s.VDegree, s.isVPeriodic()))
+    for i, e in enumerate(tools):
+        try:
+            uvs = [s.parameter(p) for p in _edge_points(e, [j / 8.0 for j in range(9)])]
+        except Exception:  # noqa: BLE001 - OCCT's projection fails in several classes
+            continue
+        for k, (knots, mults, degree, periodic) in enumerate(directions):
+            span = knots[-1] - knots[0]
+            inner = range(len(knots)) if periodic else range(1, len(knots) - 1)
+            for j in (j for j in inner if mults[j] >= degree):
+                gaps = [abs(uv[k] - knots[j]) for uv in uvs]
+                off = max(min(g % span, span - g % span) if periodic else g for g in gaps)
+                if off <= 1e-3 * span:
+                    which = ("the trimline edge on it" if len(tools) == 1 else
+                             "the %s of the %d trimline edges on it"
+                             % (_ordinal(i + 1), len(tools)))
+                    return (", cutting along a knot line where its B-spline surface is only "
+                            "C0: %s runs along %s = %.6g (within %.2g)"
+                            % (which, "uv"[k], knots[j], off))
+    return ""
 
 
 def _restarted(edge, face=None, tol=0.0):

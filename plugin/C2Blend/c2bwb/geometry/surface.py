@@ -171,10 +171,17 @@ def domain_distance(face, p):
 
 def winds(face):
     """True when face's domain spans more than one period of its surface."""
+    return periods(face) > 1.0 + 1e-9
+
+
+def periods(face):
+    """How many periods of its surface face's domain spans: the larger of its spans in
+    the surface's periodic directions, each divided by the period (0 when the surface
+    is not periodic)."""
     s = face.Surface
     u0, u1, v0, v1 = face.ParameterRange
-    return (s.isUPeriodic() and u1 - u0 > s.UPeriod() * (1.0 + 1e-9)) or \
-        (s.isVPeriodic() and v1 - v0 > s.VPeriod() * (1.0 + 1e-9))
+    return max([(u1 - u0) / s.UPeriod()] if s.isUPeriodic() else [0.0]
+               + ([(v1 - v0) / s.VPeriod()] if s.isVPeriodic() else []))
 
 
 def frame_or_none(face, u, v):
