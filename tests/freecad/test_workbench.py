@@ -2910,7 +2910,7 @@ def test_a_cut_whose_pieces_overlap_says_so():
     m = re.fullmatch(r"OCCT's general fuse cut the face into pieces whose areas add up to "
                      r"([0-9.]+), more than its ([0-9.]+): the face spans ([0-9.]+) periods "
                      r"of its surface, winding round it \(as between the turns of a helical "
-                     r"ridge\), and OCCT's general fuse does not cut such a face",
+                     r"ridge\), and OCCT's general fuse cut it wrongly",
                      fl._fused(face, helix.Edges, 1e-7))
     assert m and float(m.group(1)) > 1.1 * float(m.group(2)) and \
         float(m.group(2)) == pytest.approx(face.Area, rel=1e-5)

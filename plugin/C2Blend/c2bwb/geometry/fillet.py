@@ -758,8 +758,8 @@ def _amiss(face, pieces, areas=None, tools=()):
         return ("OCCT's general fuse cut the face into pieces whose areas add up to "
                 "%.6g, more than its %.6g%s" % (area, whole, (
                     ": the face spans %.2g periods of its surface, winding round it (as "
-                    "between the turns of a helical ridge), and OCCT's general fuse does "
-                    "not cut such a face" % turns) if turns > 1.0 + 1e-9 else
+                    "between the turns of a helical ridge), and OCCT's general fuse cut it "
+                    "wrongly" % turns) if turns > 1.0 + 1e-9 else
                     ", as where the face winds round its surface's seam"))
     return None
 
