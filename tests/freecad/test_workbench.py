@@ -2917,6 +2917,24 @@ def test_a_cut_whose_pieces_overlap_says_so():
     assert m.group(3) == "3.6"
 
 
+@pytest.mark.parametrize("surface, bounds, expected", [
+    (Part.Toroid(), (0.0, math.pi, 0.0, 3 * math.pi), 1.5),  # v winds, u periodic too
+    (Part.Toroid(), (0.0, 3 * math.pi, 0.0, math.pi), 1.5),
+    (Part.Cylinder(), (-1.2 * math.pi, 6.0 * math.pi, 0.0, 12.0), 3.6),
+    (Part.Plane(), (0.0, 100.0, 0.0, 100.0), 0.0)])
+def test_periods_a_face_spans(surface, bounds, expected):
+    """surface.periods: the larger span of a face's domain over its surface's periodic
+    directions, in periods, whichever direction it is. OCCT clamps a face made on a
+    periodic surface to one period, so the domain (ParameterRange) is given here as
+    the pcurves of a face between a ridge's turns give it (the 3-turn helical ridge's
+    cylinder face: 3.6 periods)."""
+    from types import SimpleNamespace
+    from c2bwb.geometry.surface import periods, winds
+    face = SimpleNamespace(Surface=surface, ParameterRange=bounds)
+    assert periods(face) == pytest.approx(expected, rel=1e-12)
+    assert winds(face) == (expected > 1.0)
+
+
 @pytest.mark.parametrize("dv", [0.0, 1e-6, 1e-3, 0.1])
 def test_a_cut_along_a_c0_knot_line_says_so(dv):
     """The face of a torus scaled 1.5 x 1.2 x 1 by transformGeometry, at z = 0.5 turned

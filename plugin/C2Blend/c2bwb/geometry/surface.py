@@ -180,8 +180,12 @@ def periods(face):
     is not periodic)."""
     s = face.Surface
     u0, u1, v0, v1 = face.ParameterRange
-    return max([(u1 - u0) / s.UPeriod()] if s.isUPeriodic() else [0.0]
-               + ([(v1 - v0) / s.VPeriod()] if s.isVPeriodic() else []))
+    spans = [0.0]
+    if s.isUPeriodic():
+        spans.append((u1 - u0) / s.UPeriod())
+    if s.isVPeriodic():
+        spans.append((v1 - v0) / s.VPeriod())
+    return max(spans)
 
 
 def frame_or_none(face, u, v):
