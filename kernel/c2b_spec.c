@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "c2b_expr.h"
+#include "c2b_json.h"
 #include "c2b_nurbs.h"
 #include "c2b_nurbs_json.h"
 #include "c2b_odesurf.h"
@@ -222,26 +223,6 @@ static c2b_status want_numbers(const cJSON *j, const char *field, int n, double 
     return C2B_OK;
 }
 
-static c2b_status check_keys(const cJSON *obj, const char *where, const char *const *allowed,
-                             c2b_error *err)
-{
-    for (const cJSON *x = obj->child; x; x = x->next) {
-        int ok = 0;
-        for (const char *const *a = allowed; *a && !ok; a++)
-            ok = !strcmp(*a, x->string);
-        if (!ok) {
-            char list[512] = "";
-            size_t used = 0;
-            for (const char *const *a = allowed; *a && used < sizeof list; a++)
-                used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
-                                         a == allowed ? "" : ", ", *a);
-            return c2b_error_set(err, C2B_ERR_SPEC, "%s%sunknown key '%s' (allowed: %s)", where,
-                                 *where ? ": " : "", x->string, list);
-        }
-    }
-    return C2B_OK;
-}
-
 static c2b_constants constants_of(const c2b_spec *s)
 {
     c2b_constants c = {s->nconst, (const char *const *)s->cnames, s->cvalues};
@@ -273,8 +254,9 @@ static c2b_status parse_constants(c2b_spec *s, const cJSON *j, c2b_error *err)
 {
     if (!j)
         return C2B_OK;
-    if (!cJSON_IsObject(j))
-        return c2b_error_set(err, C2B_ERR_SPEC, "constants: expected an object of numbers");
+    c2b_status cs = c2b_json_keys(j, "constants", "of numbers", NULL, 0, NULL, err);
+    if (cs)
+        return cs;
     for (const cJSON *x = j->child; x; x = x->next) {
         char f[LABEL_LEN + 32];
         snprintf(f, sizeof f, "constants.%s", x->string);
@@ -328,7 +310,7 @@ static c2b_status parse_shape(c2b_spec *s, const cJSON *j, c2b_error *err)
     }
     if (cJSON_IsObject(j)) {
         static const char *const keys[] = {"x", "y", "z", NULL};
-        c2b_status st = check_keys(j, "shape", keys, err);
+        c2b_status st = c2b_json_keys(j, "shape", NULL, keys, 0, NULL, err);
         if (st)
             return st;
         for (int c = 0; c < C2B_NCOMP; c++) {
@@ -426,7 +408,7 @@ static c2b_status parse_primary(c2b_spec *s, const cJSON *j, int side, c2b_error
     if (!cJSON_IsObject(j))
         return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an object", where);
     static const char *const keys[] = {"surface", "nurbs", "trim_u", "trim_v", "direction", "name", NULL};
-    c2b_status st = check_keys(j, where, keys, err);
+    c2b_status st = c2b_json_keys(j, where, NULL, keys, 0, NULL, err);
     if (st)
         return st;
     primary *pr = &s->prim[side];
@@ -492,7 +474,7 @@ static c2b_status parse_samples(const c2b_spec *s, const cJSON *j, const char *w
                                 double **out, int *n, c2b_error *err)
 {
     static const char *const keys[] = {"samples", NULL};
-    c2b_status st = check_keys(j, where, keys, err);
+    c2b_status st = c2b_json_keys(j, where, NULL, keys, 0, NULL, err);
     if (st)
         return st;
     const cJSON *sm = cJSON_GetObjectItemCaseSensitive(j, "samples");
@@ -570,7 +552,7 @@ static c2b_status parse_boundary(c2b_spec *s, const cJSON *j, c2b_error *err)
     if (!cJSON_IsObject(j))
         return c2b_error_set(err, C2B_ERR_SPEC, "boundary: expected {\"u0\": [...], \"u1\": [...]}");
     static const char *const keys[] = {"u0", "u1", NULL};
-    c2b_status st = check_keys(j, "boundary", keys, err);
+    c2b_status st = c2b_json_keys(j, "boundary", NULL, keys, 0, NULL, err);
     if (st)
         return st;
     int n = c2b_continuity_n(s->pb.continuity);
@@ -726,7 +708,7 @@ static c2b_status parse_curves(c2b_spec *s, const cJSON *j, c2b_error *err)
     if (!cJSON_IsObject(j))
         return c2b_error_set(err, C2B_ERR_SPEC, "curves: expected an object");
     static const char *const keys[] = {"c1", "c4", "w", "controls", NULL};
-    c2b_status st = check_keys(j, "curves", keys, err);
+    c2b_status st = c2b_json_keys(j, "curves", NULL, keys, 0, NULL, err);
     if (st)
         return st;
     if (s->pb.continuity != C2B_ODE)
@@ -759,7 +741,7 @@ static c2b_status parse_curves(c2b_spec *s, const cJSON *j, c2b_error *err)
             static const char *const ck[] = {"u", "curve", NULL};
             if (!cJSON_IsObject(x))
                 return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected {\"u\": ..., \"curve\": [x, y, z]}", f);
-            if ((st = check_keys(x, f, ck, err)))
+            if ((st = c2b_json_keys(x, f, NULL, ck, 0, NULL, err)))
                 return st;
             char fu[LABEL_LEN + 8], fc[LABEL_LEN + 8];
             snprintf(fu, sizeof fu, "%s.u", f);
@@ -792,7 +774,7 @@ static c2b_status parse_root(c2b_spec *s, const cJSON *root, c2b_error *err)
                                        "v_range", "periodic", "constants", "time", "primaries",
                                        "boundary", "force", "tolerance", "solver", "M", "N",
                                        "collocation", "approach", "group2", "curves", NULL};
-    c2b_status st = check_keys(root, "", keys, err);
+    c2b_status st = c2b_json_keys(root, "", NULL, keys, 0, NULL, err);
     if (st)
         return st;
     const cJSON *j;

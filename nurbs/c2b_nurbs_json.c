@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "c2b_json.h"
+
 /* Path buffers: a path prefix plus a short field name. */
 #define NJ_PATH 512
 
@@ -35,45 +37,6 @@ static const char *nj_path(char *buf, size_t len, const char *field, const char 
 static const char *nj_self(const char *field, const char *dflt)
 {
     return field && *field ? field : dflt;
-}
-
-/* The values of the object obj's `keys` (a NULL-terminated list) in items[i] (NULL where
- * absent). A missing obj, one that is no object (the message then shows `form`), a key
- * outside the list, a duplicate key, and a missing one among the first `required` are
- * errors naming the object (self) and the key. */
-static c2b_status nj_keys(const cJSON *obj, const char *self, const char *form,
-                          const char *const *keys, int required, const cJSON **items,
-                          c2b_error *err)
-{
-    if (!obj)
-        return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing", self);
-    if (!cJSON_IsObject(obj))
-        return c2b_error_set(err, C2B_ERR_SPEC, "%s: expected an object %s", self, form);
-    for (const cJSON *x = obj->child; x; x = x->next) {
-        const char *k = x->string ? x->string : "";
-        int ok = 0;
-        for (int i = 0; keys[i]; i++)
-            if (strcmp(k, keys[i]) == 0)
-                ok = 1;
-        if (!ok) {
-            char list[256] = "";
-            size_t used = 0;
-            for (int i = 0; keys[i] && used < sizeof list; i++)
-                used += (size_t)snprintf(list + used, sizeof list - used, "%s'%s'", i ? ", " : "",
-                                         keys[i]);
-            return c2b_error_set(err, C2B_ERR_SPEC, "%s: unknown key '%s' (expected %s)", self, k,
-                                 list);
-        }
-        for (const cJSON *y = obj->child; y != x; y = y->next)
-            if (y->string && strcmp(y->string, k) == 0)
-                return c2b_error_set(err, C2B_ERR_SPEC, "%s: duplicate key '%s'", self, k);
-    }
-    for (int i = 0; keys[i]; i++) {
-        items[i] = cJSON_GetObjectItemCaseSensitive(obj, keys[i]);
-        if (!items[i] && i < required)
-            return c2b_error_set(err, C2B_ERR_SPEC, "%s: missing key '%s'", self, keys[i]);
-    }
-    return C2B_OK;
 }
 
 /* A degree: an integer-valued number (range checked by the create functions). */
@@ -160,7 +123,7 @@ c2b_status c2b_nurbs_surface_from_json(const cJSON *obj, const char *field,
     *out = NULL;
     static const char *const keys[] = {"degree", "knots_u", "knots_v", "poles", "periodic", NULL};
     const cJSON *it[5];
-    c2b_status st = nj_keys(obj, self,
+    c2b_status st = c2b_json_keys(obj, self,
                             "{\"degree\": [p, q], \"knots_u\": [...], \"knots_v\": [...], "
                             "\"poles\": [[[x, y, z, w], ...], ...]}",
                             keys, 4, it, err);
@@ -246,7 +209,7 @@ c2b_status c2b_nurbs_curve_from_json(const cJSON *obj, const char *field, c2b_nu
     *out = NULL;
     static const char *const keys[] = {"degree", "knots", "poles", "periodic", NULL};
     const cJSON *it[4];
-    c2b_status st = nj_keys(obj, self,
+    c2b_status st = c2b_json_keys(obj, self,
                             "{\"degree\": p, \"knots\": [...], \"poles\": [[x, y, z, w], ...]}",
                             keys, 3, it, err);
     if (st)

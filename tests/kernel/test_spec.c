@@ -26,6 +26,18 @@ static const bad_case CASES[] = {
     {"[1, 2]", C2B_ERR_SPEC, 0, "top level must be a JSON object"},
     {"{\"periodic\": true, \"colour\": 3, " GOOD_PRIM "}", C2B_ERR_SPEC, 0, "unknown key 'colour'"},
     {"{\"periodic\": true}", C2B_ERR_SPEC, 0, "missing 'primaries'"},
+    /* a repeated key would otherwise silently take the first value (cJSON's lookup) */
+    {"{\"continuity\": \"C1\", \"continuity\": \"C2\", " GOOD_PRIM "}", C2B_ERR_SPEC, 0,
+     "duplicate key 'continuity' (give each key once)"},
+    {"{\"constants\": {\"a\": 1, \"b\": 2, \"a\": 3}, " GOOD_PRIM "}", C2B_ERR_SPEC, 0,
+     "constants: duplicate key 'a'"},
+    {"{\"constants\": [1, 2], " GOOD_PRIM "}", C2B_ERR_SPEC, 0,
+     "constants: expected an object of numbers"},
+    {"{\"primaries\": [{\"surface\": [\"v\", \"u\", \"0\"], \"trim_u\": 0, \"trim_u\": 1},"
+     " {\"surface\": [\"v\", \"u\", \"1\"], \"trim_u\": 0}]}",
+     C2B_ERR_SPEC, 0, "primaries[0]: duplicate key 'trim_u'"},
+    {"{\"shape\": {\"x\": [1,1,1,1], \"y\": [1,1,1,1], \"z\": [1,1,1,1], \"x\": [2,2,2,2]}, "
+     GOOD_PRIM "}", C2B_ERR_SPEC, 0, "shape: duplicate key 'x'"},
     {"{\"continuity\": \"C4\", " GOOD_PRIM "}", C2B_ERR_SPEC, 0, "continuity: 'C4' is not one of"},
     {"{\"shape\": [1, 1, 1], " GOOD_PRIM "}", C2B_ERR_SPEC, 0, "shape: expected an array of 4 numbers"},
     {"{\"shape\": {\"x\": [1,1,1,1], \"y\": [1,1,1,1]}, " GOOD_PRIM "}", C2B_ERR_SPEC, 0, "shape.z: missing"},

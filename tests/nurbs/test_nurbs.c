@@ -1397,7 +1397,7 @@ static void test_json(void)
                      " \"knot\": 2}");
     expect_err("JSON curve: unknown key", c2b_nurbs_curve_from_json(jc, "curves[1]", &c, &err),
                &err, C2B_ERR_SPEC,
-               "curves[1]: unknown key 'knot' (expected 'degree', 'knots', 'poles', 'periodic')");
+               "curves[1]: unknown key 'knot' (allowed: degree, knots, poles, periodic)");
     cJSON_Delete(jc);
 
     /* round trips: random full-precision values, a periodic surface, a surface made by
