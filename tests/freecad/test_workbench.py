@@ -2087,6 +2087,20 @@ def test_overshooting_blend_is_kept():
         assert abs(solid.Volume - rep["occt_volume"]) < 1e-9 * solid.Volume
 
 
+def test_a_vanishing_tension_names_only_the_faults():
+    """At tension 1e-6 the blend's end speed across the trimlines is 1e-6 R sqrt 2 on the
+    box edge (trimlines.py), so the blend face degenerates there and the solid sewn with
+    it fails OCCT's check with an invalid edge range; OCCT's face is kept. FreeCAD lists
+    the clean sub-shapes as "No error" beside the faulty ones: the reason said "Invalid
+    range (2); No error (8)". It names only the faults."""
+    solid, rep = C2Blend.fillet_report(shapes.box(), ["Edge1"], 2.0, tension=1e-6,
+                                       label="Box")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    reason = rep["kept_occt_faces"][0]["reason"]
+    assert "Invalid range" in reason and "No error" not in reason, reason
+
+
 @pytest.mark.parametrize("tension", [0.5, 1.0])
 def test_blend_on_a_bounded_spline_face_does_not_overshoot(tension):
     """The top edge of a block extruded from an open B-spline: the part of the blend

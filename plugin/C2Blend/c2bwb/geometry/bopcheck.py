@@ -43,6 +43,9 @@ NEAR_LIMIT = 10.0
 # which take up to 10 s, by 15 to 25 %); and between looks at both checks then
 WATCH_AFTER = 10.0
 WATCH_STEP = 0.05
+NO_ERROR = "No error"  # FreeCAD's word for a sub-shape whose own status is clean
+# the finding where FreeCAD names none: every sub-shape's own status is clean
+IN_CONTEXT = "BRepCheck rejects the shape as a whole, though each of its parts passes alone"
 PENDING = object()  # _Server.answer: no answer yet
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "checkserver.py")
 
@@ -85,9 +88,16 @@ def problems(shape, seconds=None, bop=True, meanwhile=None, suspects=()):
 
 
 def _findings(found):
-    """The lines of OCCT's findings (the text of a failed check), without its heading."""
+    """The lines of OCCT's findings (the text of a failed check), without its heading and
+    without the "No error" that FreeCAD lists for each sub-shape whose own status is
+    clean beside one that is not. Where every line says "No error", the fault is in how
+    the sub-shapes fit together, which FreeCAD does not list: one line says so."""
     lines = [line.strip() for line in found.splitlines() if line.strip()]
-    return lines[1:] if len(lines) > 1 and lines[0].endswith(":") else lines
+    lines = lines[1:] if len(lines) > 1 and lines[0].endswith(":") else lines
+    faults = [line for line in lines if line != NO_ERROR]
+    if lines and not faults:
+        return [IN_CONTEXT]
+    return faults
 
 
 def _watched(shape, seconds, meanwhile, suspects):

@@ -1596,13 +1596,14 @@ def _rolling_ball(shape, edges, radius):
 def _invalid_input(shape, msg):
     """The message for OCCT's fillet failing (msg) on a solid that fails isValid(): no
     radius is to blame, the solid is (as one whose faces are not oriented alike, which
-    BRepCheck's own messages, FreeCAD's check(), pass over as "No error")."""
+    BRepCheck's own messages, FreeCAD's check(), pass over as "No error": the
+    finding is then bopcheck.IN_CONTEXT, which adds nothing to isValid() here)."""
     found = bc.problems(shape, bop=False)
     return ("OCCT's rolling-ball fillet failed (%s) on a solid that is not valid itself "
             "(isValid() is False%s): repair it first; Part > Check geometry shows what is "
             "wrong, and in a macro shape.fix(1e-7, 1e-7, 1e-7) mends faults such as a "
             "face oriented against the rest of its shell"
-            % (msg, "; BRepCheck: %s" % found if found and found != "No error" else ""))
+            % (msg, "; BRepCheck: %s" % found if found and found != bc.IN_CONTEXT else ""))
 
 
 def _rolling_ball_failure(shape, edges, radius, msg):
