@@ -37,6 +37,7 @@ typedef struct c2b_fit_options {
     int max_iter;     /**< refinement rounds (30) */
 } c2b_fit_options;
 
+/** The defaults given beside each field above. Cannot fail. */
 c2b_fit_options c2b_fit_options_default(void);
 
 /** What a fit achieved. Filled on success and on C2B_ERR_NUMERIC (budget exceeded). */

@@ -31,6 +31,7 @@ typedef struct c2b_check_options {
                           max |S_u| (resp. max(|S_uu|, |S_u|^2/diagonal)) (1e-9) */
 } c2b_check_options;
 
+/** The defaults given beside each field above. Cannot fail. */
 c2b_check_options c2b_check_options_default(void);
 
 /** A maximum and the v where it occurs. */
