@@ -18,7 +18,8 @@ extern "C" {
  * level, whose messages then carry no prefix).
  *
  * keys is a NULL-terminated list of the allowed keys, or NULL to allow any key (an object
- * of names, such as a spec's constants). With items non-NULL, items[i] receives the value
+ * of names, such as a spec's constants; the time then grows as the square of the number
+ * of keys, which the caller bounds first). With items non-NULL, items[i] receives the value
  * of keys[i], or NULL where it is absent; items must hold as many pointers as keys has
  * entries. The values stay owned by obj.
  *

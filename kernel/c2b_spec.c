@@ -254,6 +254,9 @@ static c2b_status parse_constants(c2b_spec *s, const cJSON *j, c2b_error *err)
 {
     if (!j)
         return C2B_OK;
+    /* the count first: the check for repeated names compares every pair */
+    if (cJSON_IsObject(j) && cJSON_GetArraySize(j) > MAX_CONSTANTS)
+        return c2b_error_set(err, C2B_ERR_LIMIT, "constants: more than %d", MAX_CONSTANTS);
     c2b_status cs = c2b_json_keys(j, "constants", "of numbers", NULL, 0, NULL, err);
     if (cs)
         return cs;

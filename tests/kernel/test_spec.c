@@ -149,5 +149,27 @@ int main(void)
     check_true("name is kept", s && !strcmp(c2b_spec_name(s), "x"));
     c2b_blend_destroy(b);
     c2b_spec_destroy(s);
+    s = NULL;
+
+    /* Constants: 256 distinct names parse; 257 are over the limit, which is checked
+     * before the names are compared pairwise (a repeated one is found as above). */
+    for (int count = 256; count <= 257; count++) {
+        char json[8192] = "{\"constants\": {";
+        size_t used = strlen(json);
+        for (int k = 0; k < count; k++)
+            used += (size_t)snprintf(json + used, sizeof json - used, "%s\"k%d\": %d",
+                                     k ? ", " : "", k, k);
+        snprintf(json + used, sizeof json - used, "}, %s}", GOOD_PRIM);
+        c2b_status st = c2b_spec_parse(json, strlen(json), &s, &err);
+        if (count == 256) {
+            check_true("256 constants parse", st == C2B_OK);
+        } else {
+            check_true("257 constants: over the limit", st == C2B_ERR_LIMIT);
+            check_true("257 constants: the message says so",
+                       strstr(err.msg, "constants: more than 256") != NULL);
+        }
+        c2b_spec_destroy(s);
+        s = NULL;
+    }
     return test_summary("test_spec");
 }
