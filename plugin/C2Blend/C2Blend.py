@@ -64,7 +64,7 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1)
     sides' names in error messages and the report, e.g. ("Cylinder.Face1", "Tube.Face3").
     """
     face, rep = _blendfaces.blend(face1, edge1, face2, edge2, continuity, shape_params,
-                                  tension, names=tuple(labels))
+                                  tension, names=labels)
     return (face, rep) if report else face
 
 

@@ -201,6 +201,14 @@ SCRIPT_MISUSE = [
     (lambda C, b, f, e: C.blend(None, e, f, e, labels=("A.Face1", "B.Face1")),
      r"^A\.Face1: a Part\.Face and one of its Part\.Edge objects are needed, got NoneType "
      r"and Edge$"),
+    # a string is a sequence of its letters: "AB" was taken for the names "A" and "B"
+    (lambda C, b, f, e: C.blend(f, e, f, e, labels="AB"),
+     r"^blend: labels must be two names, one per face, as \('Cylinder\.Face1', "
+     r"'Tube\.Face3'\); got 'AB'$"),
+    (lambda C, b, f, e: C.blend(f, e, f, e, labels=("A.Face1", "B.Face1", "C.Face1")),
+     r"^blend: labels must be two names, .*; got \('A\.Face1', 'B\.Face1', 'C\.Face1'\)$"),
+    (lambda C, b, f, e: C.blend(f, e, f, e, labels=None),
+     r"^blend: labels must be two names, .*; got None$"),
     (lambda C, b, f, e: C.blend_solid([]),
      r"^blend: a list of Part\.Face objects is needed .*, got an empty list$"),
     (lambda C, b, f, e: C.blend_solid(b.Edges),

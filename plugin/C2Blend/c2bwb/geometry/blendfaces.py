@@ -87,6 +87,11 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
     Returns (Part.Face, report dict). Raises C2BlendError naming the faces/edges.
     """
     t0 = time.perf_counter()
+    if isinstance(names, str) or not (isinstance(names, (tuple, list)) and len(names) == 2
+                                      and all(isinstance(x, str) for x in names)):
+        raise C2BlendError("labels must be two names, one per face, as ('Cylinder.Face1', "
+                           "'Tube.Face3'); got %r" % (names,), "blend")
+    names = tuple(names)
     for face, edge, name in ((face1, edge1, names[0]), (face2, edge2, names[1])):
         if not isinstance(face, Part.Face) or not isinstance(edge, Part.Edge):
             raise C2BlendError("a Part.Face and one of its Part.Edge objects are needed, got "
