@@ -1119,6 +1119,16 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                  for p, loop in zip(patches, loops)]
     solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
                     result, where, blended, tol)
+    while fills:
+        # OCCT's plate filling varies erratically with its input: a filling that
+        # BRepCheck rejects once sewn, or whose neighbour it rejects, is remade with the
+        # next trial (a blend's face rejected where it meets a filling that changed at
+        # the 16th digit of the blend's poles, tests/freecad)
+        redo = _rejected_fills(solid, fills)
+        if not redo or not all(f.refill() for f in redo):
+            break
+        solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where,
+                        blended, tol)
     first = solid
     overlap = (lambda: meanwhile(first)) if meanwhile else None
     if not bop:
@@ -1211,6 +1221,21 @@ def _rejected_faces(solid, blended, fills):
             out.append(("face %s of the filleted solid" % ck.element_name(solid, f, "Face"),
                         [b for b, g in mine
                          if any(e.isSame(x) for e in g.Edges for x in f.Edges)]))
+    return out
+
+
+def _rejected_fills(solid, fills):
+    """The fillings of `fills` whose face in `solid` BRepCheck rejects, or which share
+    an edge with a face it rejects."""
+    bad = [f for f in solid.Faces if not f.isValid()]
+    if not bad:
+        return []
+    edges = [e for f in bad for e in f.Edges]
+    out = []
+    for x in fills:
+        g = _patch_face(solid, x.patch)
+        if any(g.isSame(f) for f in bad) or any(e.isSame(d) for e in g.Edges for d in edges):
+            out.append(x)
     return out
 
 
