@@ -1117,18 +1117,21 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
             loops = []  # a sewing gap: reported below
         fills = [_Fill(shells[0], p, loop, _at_corner(p, blended))
                  for p, loop in zip(patches, loops)]
-    solid = _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
-                    result, where, blended, tol)
+
+    def closed():  # the solid, sewn again with the fillings as they are now
+        return _closed(_sewn(faces_out + [f.face for f in fills]) if fills else shells,
+                       result, where, blended, tol)
+    solid = closed()
     while fills:
         # OCCT's plate filling varies erratically with its input: a filling that
         # BRepCheck rejects once sewn, or whose neighbour it rejects, is remade with the
         # next trial (a blend's face rejected where it meets a filling that changed at
-        # the 16th digit of the blend's poles, tests/freecad)
+        # the 16th digit of the blend's poles: test_workbench.py,
+        # test_a_filling_that_breaks_the_sewn_solid_is_remade)
         redo = _rejected_fills(solid, fills)
         if not redo or not all(f.refill() for f in redo):
             break
-        solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where,
-                        blended, tol)
+        solid = closed()
     first = solid
     overlap = (lambda: meanwhile(first)) if meanwhile else None
     if not bop:
@@ -1152,8 +1155,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                         % (ex, ", at the %s, with every plate filling tried"
                            % ", ".join(f.patch.where() for f in redo) if redo else ""))
                 break
-            solid = _closed(_sewn(faces_out + [f.face for f in fills]), result, where,
-                            blended, tol)
+            solid = closed()
     orig = _input_problems(shape) if problems else None
     # an input that fails the BOP check for C0 geometry only does not stop the faults
     # that are new being looked for around the blends: they are the fillet's
