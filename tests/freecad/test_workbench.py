@@ -1001,57 +1001,69 @@ def test_a_blend_that_cannot_be_sewn_is_kept_as_occts(monkeypatch):
     assert solid.Volume == pytest.approx(box.makeFillet(2.0, [box.Edge1]).Volume, rel=1e-12)
 
 
-@pytest.mark.parametrize("vertex_gaps", ["left", "covered"])
-def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts(monkeypatch, vertex_gaps):
-    """A spline extrusion's top outline and its four vertical edges at R = 1: four
-    corners where a top edge on the B-spline top meets two planes. With the blends
-    ending at OCCT's corners, 1e-4 from the ball touching the three faces (as before
-    knots.at_corner_balls, which this test turns off), the sewn solid failed BRepCheck
-    at the corner at x = 30, y = 0, and the fillet failed with FreeCAD's message, which
-    lists the faces' own statuses: "not valid after sewing (BRepCheck and BOP check: No
-    error (13))". Now the rejected faces are named, and the blends and filling they
-    belong to are kept as OCCT's fillets; the corners where a kept fillet meets blends
-    get plates folded over (1.5 to 2 rad), which are refused, so the others are kept
-    too, each with its reason: a valid solid, G1, OCCT's. BRepCheck rejected vertices
-    that the faces' cut left up to its fuzzy value from their edges' ends; their
-    tolerances now cover such gaps (fillet._update_tolerances), and BRepCheck rejects
-    them only with the gaps left as the cut leaves them ("left"), and with the fillings
-    next to the faces it rejects not remade (fillet._rejected_fills, which otherwise
-    finds a filling that passes, and the BOP check then finds the faults as below).
-    Where they are covered, the BOP check finds the faults instead (tiny edges,
-    self-intersecting vertices), and the same fillets are kept for them."""
+def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts(monkeypatch):
+    """Fault injection: the unequal tee at R = 0.5 with the vertex gaps that cutting the
+    big pipe along the trimline leaves (2.8e-6, see
+    test_trimline_across_a_seam_at_its_own_vertex) not covered by the vertices'
+    tolerances (fillet._vertex_gap turned off). BRepCheck then rejects the cut face.
+    FreeCAD's own message would list the faces' statuses ("No error"); the report names
+    the face it rejects, and the blend is kept as OCCT's fillet with that reason: a
+    valid solid, G1, OCCT's. (Plate fillings that BRepCheck rejected once tested this on
+    the spline extrusion's corners; solved once (corners.FILL) they pass it.)"""
+    monkeypatch.setattr(fl, "_vertex_gap", lambda edge, pcurves: [])
+    s, names = shapes.unequal_tee()
+    solid, rep = C2Blend.fillet_report(s, names, 0.5, label="Tee")
+    assert_valid(solid)
+    assert rep["verdict"] == "G1" and not rep["blends"]
+    assert solid.Volume == pytest.approx(s.makeFillet(0.5, [s.getElement(e) for e in names])
+                                         .Volume, rel=1e-12)
+    (kept,) = rep["kept_occt_faces"]
+    assert kept["where"] == ", ".join("Tee.%s" % e for e in names)
+    assert re.fullmatch(r"the solid sewn with its blend is not valid: BRepCheck rejects "
+                        r"face Face\d+ of the filleted solid", kept["reason"]), kept
+
+
+def test_blends_ending_off_the_corner_balls_are_kept_as_occts(monkeypatch):
+    """Fault injection: a spline extrusion's top outline and its four vertical edges at
+    R = 1, four corners where a top edge on the B-spline top meets two planes, with the
+    blends ending at OCCT's corners, 1e-4 from the ball touching the three faces (as
+    before knots.at_corner_balls, turned off here). OCCT's BOP check finds tiny edges
+    and self-intersecting vertices around them; each blend it finds them around is kept
+    as OCCT's fillet with the finding as its reason, and so are the corner patches
+    where they meet. Which blends the BOP check finds faults around depends on the
+    plate fillings, which vary with the 16th digit of the blends' poles: measured,
+    all 8 kept (corners.FILL solving the plate twice); Arch.Edge11 left, its corner's
+    filling 1.4e-4 off and turning 5e-3 rad from the faces around it (solved once);
+    all 8 left, the fillings 1e-6 to 9e-6 off and within 7.6e-4 rad (solved once, the
+    poles perturbed as in _perturb_poles). The fillings of holes with a 1e-4 edge are
+    reported G0, and so is the fillet; with every fillet kept, it is G1 and OCCT's."""
     monkeypatch.setattr(fl, "at_corner_balls", lambda chain, at_ends, radius: chain)
-    if vertex_gaps == "left":
-        monkeypatch.setattr(fl, "_vertex_gap", lambda edge, pcurves: [])
-        monkeypatch.setattr(fl, "_rejected_fills", lambda solid, fills: [])
     s, _ = shapes.spline_extrusion()
     edges = ["Edge%d" % i for i in range(5, 13)]  # the top's 4 edges, the 4 vertical
     assert sorted(round(s.getElement(e).BoundBox.ZMin) for e in edges if
                   s.getElement(e).BoundBox.ZLength > 9) == [0, 0, 0, 0]
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Arch")
     assert_valid(solid)
-    assert rep["verdict"] == "G1" and not rep["blends"]
-    assert solid.Volume == pytest.approx(s.makeFillet(1.0, [s.getElement(e) for e in edges])
-                                         .Volume, rel=1e-12)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
     reasons = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
-    assert sorted(reasons) == sorted(["Arch.%s" % e for e in edges]) + sorted(
-        k for k in reasons if k.startswith("corner patch"))
-    rejected = [w for w, r in reasons.items() if r.startswith(
-        "the solid sewn with its blend is not valid: BRepCheck rejects ")]
-    if vertex_gaps == "left":
-        assert sum("the plate filling of the corner patch at (29.76, 0.5, 9.95)" in reasons[w]
-                   for w in rejected) >= 2, reasons
+    blended = [b["where"] for b in rep["blends"]]
+    assert sorted(blended + [k for k in reasons if k.startswith("Arch.")]) == \
+        sorted("Arch.%s" % e for e in edges)
+    assert all(r.startswith("OCCT's BOP check of the solid sewn with its blend finds, "
+                            "around it: ") and "BOPAlgo" in r
+               for k, r in reasons.items() if k.startswith("Arch."))
+    assert all(r == "OCCT's corner patch, kept with the fillets that meet there"
+               for k, r in reasons.items() if k.startswith("corner patch"))
+    assert all(r["verdict"] == "G2" for r in rep["trimlines"])
+    assert len(rep["corner_patches"]) + sum(k.startswith("corner patch") for k in reasons) == 4
+    for c in rep["corner_patches"]:
+        assert c["g0"] < 1e-3 and c["g1"] < fl.cn.MAX_SEAM and c["verdict"] == "G0", c
+    if blended:
+        assert rep["verdict"] == "G0"
     else:
-        assert not rejected and any(r.startswith(
-            "OCCT's BOP check of the solid sewn with its blend finds, around it: ")
-            for r in reasons.values()), reasons
-    for w in rejected:
-        assert re.search(r"the blend face of Arch\.Edge\d+", reasons[w])
-        assert "No error" not in reasons[w]
-    folded = [r for r in reasons.values() if re.search(
-        r"cannot be replaced: OCCT's plate filling of its 3-sided hole turns from the "
-        r"faces around it by [12]\.?\d* rad at best", r)]
-    assert folded, reasons
+        assert rep["verdict"] == "G1"
+        assert solid.Volume == pytest.approx(
+            s.makeFillet(1.0, [s.getElement(e) for e in edges]).Volume, rel=1e-12)
 
 
 def test_blends_around_which_the_bop_check_finds_faults_are_kept_as_occts(monkeypatch):
@@ -1214,13 +1226,37 @@ def test_fillets_at_a_corner_end_at_the_ball_touching_its_three_faces():
     assert len(touching) == 3
 
 
-def test_plate_fillings_are_tried_with_more_points_per_edge():
+def _perturb_poles(monkeypatch):
+    """Every pole of every fitted blend changed in its 16th digit: x (1 +- 2.3e-16), in
+    a fixed pattern (numpy seed 12345), as another platform's rounding might."""
+    import numpy
+
+    def perturbed(blend, tol_rel, where):
+        surface, fit = original(blend, tol_rel, where)
+        rng = numpy.random.default_rng(12345)
+        poles = fit["poles"] * (1.0 + 2.3e-16 * rng.choice([-1.0, 1.0],
+                                                           size=fit["poles"].shape))
+        surface.buildFromPolesMultsKnots(poles.tolist(), fit["umults"], fit["vmults"],
+                                         fit["uknots"], fit["vknots"], fit["uperiodic"],
+                                         fit["vperiodic"], fit["udegree"], fit["vdegree"])
+        return surface, fit
+    original = fl.fit_surface
+    monkeypatch.setattr(fl, "fit_surface", perturbed)
+
+
+@pytest.mark.parametrize("perturbed", [False, True])
+def test_plate_fillings_are_tried_with_more_points_per_edge(monkeypatch, perturbed):
     """The spline block's top outline and vertical edges, R = 1 (four corners at the
     top). At the corner (30, 0, 15) OCCT's plate filling with 30 points per edge turned
     from the blends by 1.8e-4 to 1.1e-3 rad at every maximum degree from 6 to 14, and
     OCCT's BOP check found it self-intersecting; its fillets were kept as OCCT's, and
     with them (by other such faults) six of the eight. With 40 points it is within
-    1.5e-4 rad and passes (corners.TRIALS)."""
+    1.5e-4 rad and passes (corners.TRIALS). With the poles perturbed (_perturb_poles),
+    the plates at the corner near (0, 0, 15) turned by 4.4e-3 to 9.4e-3 rad at every
+    trial while the plate was solved twice (FILL's Iterations 2): the report's g1 was
+    6.5e-3. Solved once, they stay within 1e-3 either way (measured 5.2e-4, 5.0e-4)."""
+    if perturbed:
+        _perturb_poles(monkeypatch)
     s = shapes.spline_block()[0]
     top = s.BoundBox.ZMax
     edges = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
@@ -3284,19 +3320,7 @@ def test_a_filling_that_breaks_the_sewn_solid_is_remade(monkeypatch):
     fillet._rejected_fills). A filling that BRepCheck rejects, or whose neighbour it
     rejects, is now remade with the next trial, and the outcome does not depend on the
     rounding: all 12 blended, 8 corners filled."""
-    import numpy
-
-    def perturbed(blend, tol_rel, where):
-        surface, fit = original(blend, tol_rel, where)
-        rng = numpy.random.default_rng(12345)
-        poles = fit["poles"] * (1.0 + 2.3e-16 * rng.choice([-1.0, 1.0],
-                                                           size=fit["poles"].shape))
-        surface.buildFromPolesMultsKnots(poles.tolist(), fit["umults"], fit["vmults"],
-                                         fit["uknots"], fit["vknots"], fit["uperiodic"],
-                                         fit["vperiodic"], fit["udegree"], fit["vdegree"])
-        return surface, fit
-    original = fl.fit_surface
-    monkeypatch.setattr(fl, "fit_surface", perturbed)
+    _perturb_poles(monkeypatch)
     s, _ = shapes.partial_revolution()
     solid, rep = C2Blend.fillet_report(s, shapes.every_edge(s), 1.0, label="Rev")
     assert_valid(solid)

@@ -942,9 +942,10 @@ def _update_tolerances(edges, fuzzy):
     the point where the trimline crosses the face's seam with the trimline's own
     vertex when they are closer than that, and the seam's pieces then end up to that
     far from their vertex (2.8e-6 against 2e-7, where a pipe r = 3 meets one of r = 6,
-    filleted at R = 0.5: BRepCheck rejected the face). Wider gaps are no artefact of
-    the cut, and BRepCheck is left to find them (blends ending 1e-4 from where they
-    should, test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts)."""
+    filleted at R = 0.5: BRepCheck rejected the face,
+    test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts). Wider gaps are no
+    artefact of the cut, and the checks are left to find them (blends ending 1e-4 from
+    where they should: test_blends_ending_off_the_corner_balls_are_kept_as_occts)."""
     for e in edges:
         if e.Degenerated:  # a pole: no 3D curve to compare with
             continue
