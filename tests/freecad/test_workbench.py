@@ -1023,6 +1023,73 @@ def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts(monkeypatch):
                         r"face Face\d+ of the filleted solid", kept["reason"]), kept
 
 
+def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
+    """The sewn solid of the three edges at the box's vertex (0, 0, 10), R = 2 (three
+    blends and a plate filling, all valid), with one face at a time remade on its own
+    edges (as a B-spline) but with its wire reversed, which BRepCheck rejects. The
+    faults of the pipeline that BRepCheck once rejected in a blend or a filling came
+    from plates that no longer occur (test_blends_whose_faces_brepcheck_rejects_are_kept_
+    as_occts); the faults I injected before the sewing were mended by it or caught by
+    another check (the BOP check, or making the solid), so the names are tested here,
+    on the sewn solid.
+    fillet._rejected_faces names the face as the report does and blames its own blend,
+    the blends ending at the filling, or the blends sharing an edge with a face of the
+    box; the filling is remade (fillet._rejected_fills) when it, or a face sharing an
+    edge with it, is rejected."""
+    seen = {}
+    real_closed, real_fills = fl._closed, fl._rejected_fills
+
+    def closed(shells, result, where, blended, fuzzy):
+        seen["blended"] = blended
+        return real_closed(shells, result, where, blended, fuzzy)
+
+    def rejected_fills(solid, fills):
+        seen["solid"], seen["fills"] = solid, fills
+        return real_fills(solid, fills)
+
+    monkeypatch.setattr(fl, "_closed", closed)
+    monkeypatch.setattr(fl, "_rejected_fills", rejected_fills)
+    box = shapes.box()
+    corner = _corner_edges(box, V(0, 0, 10))
+    solid, rep = C2Blend.fillet_report(box, corner, 2.0, label="Box")
+    assert_corner_filled(rep, 3, 1)
+    sewn, blended, (fill,) = seen["solid"], seen["blended"], seen["fills"]
+    assert sorted(b.where for b in blended) == sorted("Box.%s" % e for e in corner)
+    assert fl._rejected_faces(sewn, blended, [fill]) == [] == fl._rejected_fills(sewn, [fill])
+
+    def rejecting(face):  # the solid's faces as a shell, face remade with its wire reversed
+        bad = Part.Face(face.toNurbs().Faces[0].Surface, face.OuterWire.reversed())
+        assert not bad.isValid() and sorted(e.hashCode() for e in bad.Edges) == \
+            sorted(e.hashCode() for e in face.Edges)
+        return Part.Shell([bad if f.isSame(face) else f for f in sewn.Faces])
+
+    def where(rejected):
+        return [(name, sorted(b.where for b in near)) for name, near in rejected]
+
+    for b in blended:
+        shell = rejecting(fl._find_face(sewn, b))
+        assert where(fl._rejected_faces(shell, blended, [fill])) == \
+            [("the blend face of %s" % b.where, [b.where])]
+        assert fl._rejected_fills(shell, [fill]) == [fill]  # its end section bounds it
+    shell = rejecting(fl._patch_face(sewn, fill.patch))
+    p = fill.patch.face.CenterOfMass
+    assert where(fl._rejected_faces(shell, blended, [fill])) == \
+        [("the plate filling of the corner patch at (%.4g, %.4g, %.4g)" % (p.x, p.y, p.z),
+          sorted("Box.%s" % e for e in corner))]
+    assert fl._rejected_fills(shell, [fill]) == [fill]
+    # the box's face x = 0 (cut along two of the blends' trimlines, apart from the
+    # filling): the blends of the two corner edges lying in it
+    (k,) = [k for k, f in enumerate(sewn.Faces) if f.Surface.__class__.__name__ == "Plane"
+            and f.BoundBox.XMax < 1e-9]
+    shell = rejecting(sewn.Faces[k])
+    in_side = sorted("Box.%s" % e for e in corner if box.getElement(e).BoundBox.XMax < 1e-9)
+    assert len(in_side) == 2
+    (k,) = [k for k, f in enumerate(shell.Faces) if f.BoundBox.XMax < 1e-9]
+    assert where(fl._rejected_faces(shell, blended, [fill])) == \
+        [("face Face%d of the filleted solid" % (k + 1), in_side)]
+    assert fl._rejected_fills(shell, [fill]) == []
+
+
 def test_blends_ending_off_the_corner_balls_are_kept_as_occts(monkeypatch):
     """Fault injection: a spline extrusion's top outline and its four vertical edges at
     R = 1, four corners where a top edge on the B-spline top meets two planes, with the

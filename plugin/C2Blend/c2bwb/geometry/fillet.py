@@ -1228,18 +1228,11 @@ def _rejected_faces(solid, blended, fills):
 
 
 def _rejected_fills(solid, fills):
-    """The fillings of `fills` whose face in `solid` BRepCheck rejects, or which share
-    an edge with a face it rejects."""
-    bad = [f for f in solid.Faces if not f.isValid()]
-    if not bad:
-        return []
-    edges = [e for f in bad for e in f.Edges]
-    out = []
-    for x in fills:
-        g = _patch_face(solid, x.patch)
-        if any(g.isSame(f) for f in bad) or any(e.isSame(d) for e in g.Edges for d in edges):
-            out.append(x)
-    return out
+    """The fillings of `fills` whose face in `solid` shares an edge with a face that
+    BRepCheck rejects, or is one (a face shares all its edges with itself)."""
+    edges = [e for f in solid.Faces if not f.isValid() for e in f.Edges]
+    return [x for x in fills if edges and any(
+        e.isSame(d) for e in _patch_face(solid, x.patch).Edges for d in edges)]
 
 
 def _bop_faulty(solid, blended, fills, ignore=None):
