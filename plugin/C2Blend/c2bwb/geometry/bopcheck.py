@@ -21,8 +21,19 @@ solid that runs long is therefore watched by a second server, which checks the
 neighbourhoods of its plate fillings (the suspects) one by one: the first that passes
 its own, shorter limit says where, and the whole check is stopped then. On a 20 x 20 x
 10 box with every edge filleted at R = 0.5, the fillet took 58 s when the stuck filling
-was found only after the whole check's limit, and takes 34 s so (26 s if watched from
-the start, WATCH_AFTER).
+was found only after the whole check's limit (then 30 s on the clock), and takes 29 s
+so.
+
+The limits count the processor time of the check server, not the time on the clock: on
+a busy machine a check gets a share of a processor, and a limit on the clock gave up
+checks that would have passed (a pentagonal prism with 11 edges filleted at R = 0.863,
+whose slowest plate filling's neighbourhood takes 8.9 s of processor time to check, had
+one given up as stuck with the test suite running beside it, and that filling made
+again: the solid depended on the machine's load). Processor time measures the work
+whatever the processors: OCCT checks on several threads, and the prism's solid took
+18.6 s of processor time in 9.9 s on two processors, 19.0 s on one. A server that gets
+almost no processor time is given up all the same after WALL_FACTOR times the limit on
+the clock.
 """
 import json
 import os
@@ -33,14 +44,22 @@ import time
 
 import Part
 
-# seconds, for a whole solid (checks that passed took 1.6 to 10 s on a box with 12
-# blends and 8 plate fillings, R = 1 to 3) and for a face with its neighbours (0.3 to
-# 1 s)
-LIMIT = 30.0
-NEAR_LIMIT = 10.0
-# s: the suspects' neighbourhoods are checked alongside a whole shape's check that has
-# not finished this long after it started (a second server slows the usual checks,
-# which take up to 10 s, by 15 to 25 %); and between looks at both checks then
+# seconds of the check server's processor time, for a whole solid (checks that passed
+# took 1.6 to 10 s on the clock on a box with 12 blends and 8 plate fillings, R = 1 to
+# 3, so up to twice that in processor time on two threads, and the prism above 19 s)
+# and for a face with its neighbours (0.3 to 1 s on the clock on boxes, 8.9 s at the
+# prism's slowest corner). The whole check, watched from WATCH_AFTER on, must outlast
+# the watch: the looping neighbourhood of the 20 x 20 x 10 box was the sixth checked,
+# after 5 s of others.
+LIMIT = 45.0
+NEAR_LIMIT = 15.0
+# a check is also given up after this many times its limit on the clock, whatever
+# processor time it had (a server waiting for input, or starved of a processor)
+WALL_FACTOR = 4.0
+# s of processor time (or WALL_FACTOR times that on the clock): the suspects'
+# neighbourhoods are checked alongside a whole shape's check that has not finished
+# after this much (a second server slows the usual checks, which take up to 10 s, by
+# 15 to 25 %); and s on the clock between looks at the checks
 WATCH_AFTER = 10.0
 WATCH_STEP = 0.05
 NO_ERROR = "No error"  # FreeCAD's word for a sub-shape whose own status is clean
@@ -51,9 +70,10 @@ SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "checkserver.p
 
 
 class Unfinished(Exception):
-    """The check did not finish within its time limit. stuck: where problems() was given
-    suspects, those of them whose neighbourhood's check did not finish either (each
-    was checked, unless one was found while the whole shape was checked), else []."""
+    """The check did not finish within its time limit (_Server.overran). stuck: where
+    problems() was given suspects, those of them whose neighbourhood's check did not
+    finish either (each was checked, unless one was found while the whole shape was
+    checked), else []."""
 
     def __init__(self, message, stuck=()):
         super().__init__(message)
@@ -70,8 +90,8 @@ def problems(shape, seconds=None, bop=True, meanwhile=None, suspects=()):
     shape is checked, from WATCH_AFTER on, a second server checks their neighbourhoods
     one after another, each within NEAR_LIMIT, and where one does not finish the whole
     check, which runs into the same loop, is given up at once (_watched). Raises
-    Unfinished when the BOP check takes longer than `seconds` (LIMIT), with the
-    suspects found stuck, and what meanwhile raises."""
+    Unfinished when the BOP check takes longer than `seconds` (LIMIT) of processor time
+    (_Server.overran), with the suspects found stuck, and what meanwhile raises."""
     if bop and suspects:
         found = _watched(shape, seconds or LIMIT, meanwhile, suspects)
     elif bop:
@@ -107,7 +127,7 @@ def _watched(shape, seconds, meanwhile, suspects):
     passes its time limit, each of them found by checking the rest one by one."""
     queue = list(suspects)  # those whose neighbourhood is still to be checked
 
-    def next_near():  # (suspect, end of its time) checked on the "near" server, or None
+    def next_near():  # the suspect now checked on the "near" server, or None
         if not queue:
             return None
         try:
@@ -115,30 +135,28 @@ def _watched(shape, seconds, meanwhile, suspects):
         except OSError:  # no second server: the suspects wait for the whole
             _stop("near")
             return None
-        return queue.pop(0), time.monotonic() + NEAR_LIMIT
+        return queue.pop(0)
 
     try:
         whole = _server("whole")
         whole.send(shape)
     except OSError:  # as _checked: restarted once, or checked in this process
         return _checked(shape, seconds, meanwhile)
-    watch = time.monotonic() + WATCH_AFTER
     try:
         (meanwhile or (lambda: None))()
     except BaseException:
         _stop("whole")  # its answer would be taken for the next check's
         raise
-    end = time.monotonic() + seconds
     near, idle = None, False  # idle: no second server can check
     try:
-        while time.monotonic() < end:
-            found = whole.answer(min(WATCH_STEP, end - time.monotonic()))
+        while not whole.overran(seconds):
+            found = whole.answer(WATCH_STEP)
             if found is not PENDING:
                 if near is not None:
                     _stop("near")  # its answer would be taken for the next check's
                 return found
             if near is None:
-                if not idle and queue and time.monotonic() >= watch:
+                if not idle and queue and whole.overran(WATCH_AFTER):
                     near = next_near()
                     idle = near is None
                 continue
@@ -146,33 +164,36 @@ def _watched(shape, seconds, meanwhile, suspects):
                 done = _servers["near"].answer(0.0) is not PENDING
             except (OSError, ValueError):  # it ended, or its answer is garbled
                 _stop("near")
-                queue.insert(0, near[0])
+                queue.insert(0, near)
                 near, idle = None, True
                 continue
             if done:
                 near = next_near()
-            elif time.monotonic() >= near[1]:
+            elif _servers["near"].overran(NEAR_LIMIT):
+                late = _servers["near"].late(NEAR_LIMIT)
                 _stop()
-                raise Unfinished("OCCT's BOP check did not finish within %.0f s on the "
-                                 "neighbourhood of a plate filling" % NEAR_LIMIT, [near[0]])
+                raise Unfinished("OCCT's BOP check did not finish %s on the neighbourhood "
+                                 "of a plate filling" % late, [near])
     except (OSError, ValueError):  # the server ended while checking
         _stop()
         return _checked(shape, seconds, None)
+    late = whole.late(seconds)
     _stop("whole")
     stuck = []
     if near is not None:
         try:
-            if _servers["near"].answer(max(0.0, near[1] - time.monotonic())) is PENDING:
-                stuck.append(near[0])
+            _servers["near"].receive(NEAR_LIMIT)
+        except Unfinished:
+            stuck.append(near)
         except (OSError, ValueError):
-            queue.insert(0, near[0])
+            queue.insert(0, near)
         _stop("near")
     for face in queue:
         try:
             _checked(_neighbourhood(shape, face), NEAR_LIMIT)
         except Unfinished:
             stuck.append(face)
-    raise Unfinished("OCCT's BOP check did not finish within %.0f s" % seconds, stuck)
+    raise Unfinished("OCCT's BOP check did not finish %s" % late, stuck)
 
 
 def faulty(shape, faces, seconds, ignore=None):
@@ -209,12 +230,38 @@ class _Server:
             [python, SCRIPT, os.path.dirname(os.path.abspath(Part.__file__))],
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
         self.buffer = b""  # the part of an answer read so far
+        self.started = (time.monotonic(), None)  # (clock, processor time) at the last send
 
     def send(self, shape):
         """Start checking shape. Raises OSError when the server has ended."""
         data = shape.exportBrepToString().encode()
+        self.started = (time.monotonic(), _cpu(self.proc.pid))
         self.proc.stdin.write(b"%d\n" % len(data) + data)
         self.proc.stdin.flush()
+
+    def used(self):
+        """(processor seconds, seconds on the clock) spent on the shape sent last: the
+        server's user and system time since then (the clock's time where the system
+        does not say, as without /proc)."""
+        wall = time.monotonic() - self.started[0]
+        cpu = _cpu(self.proc.pid)
+        if cpu is None or self.started[1] is None:
+            return wall, wall
+        return cpu - self.started[1], wall
+
+    def overran(self, limit):
+        """Whether the check of the shape sent last has used `limit` seconds of
+        processor time, or WALL_FACTOR times that on the clock."""
+        cpu, wall = self.used()
+        return cpu >= limit or wall >= WALL_FACTOR * limit
+
+    def late(self, limit):
+        """'within N s of processor time' or, where the clock ran out first, 'within M s
+        (with N s of processor time)', for messages on a check that overran `limit`."""
+        cpu, wall = self.used()
+        if cpu >= limit:
+            return "within %.0f s of processor time" % limit
+        return "within %.0f s (with %.1f s of processor time)" % (WALL_FACTOR * limit, cpu)
 
     def answer(self, seconds):
         """OCCT's findings on the shape sent, None when it passes, once they have come
@@ -232,13 +279,16 @@ class _Server:
         out, self.buffer = self.buffer, b""
         return json.loads(out)["found"]
 
-    def receive(self, seconds):
-        """OCCT's findings on the shape sent, None when it passes, waiting at most
-        `seconds` from now. Raises Unfinished, and OSError when the server has ended."""
-        found = self.answer(seconds)
-        if found is PENDING:
-            raise Unfinished("OCCT's BOP check did not finish within %.0f s" % seconds)
-        return found
+    def receive(self, limit):
+        """OCCT's findings on the shape sent, None when it passes, waiting until the
+        check has used `limit` seconds (overran). Raises Unfinished, and OSError when
+        the server has ended."""
+        while True:
+            found = self.answer(WATCH_STEP)
+            if found is not PENDING:
+                return found
+            if self.overran(limit):
+                raise Unfinished("OCCT's BOP check did not finish %s" % self.late(limit))
 
     def close(self):
         self.proc.kill()
@@ -246,6 +296,17 @@ class _Server:
 
 
 _servers = {}  # this process's check servers, once started: "whole" and "near"
+
+
+def _cpu(pid):
+    """The processor seconds (user and system) that process `pid` has used, or None
+    where /proc does not say."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            fields = f.read().rsplit(")", 1)[1].split()  # after the command's name
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return None
 
 
 def _server(slot):
@@ -259,8 +320,8 @@ def _server(slot):
 
 def _checked(shape, seconds, meanwhile=None):
     """The check's findings, None when it passes: by the check server, started when
-    needed, killed when the check does not finish in time (`seconds` after meanwhile()
-    returns), replaced once when it has ended. Where no server can start, the check
+    needed, killed when the check does not finish in time (`seconds` of its processor
+    time, _Server.overran), replaced once when it has ended. Where no server can start, the check
     runs in this process, without a time limit. Raises Unfinished."""
     meanwhile = meanwhile or (lambda: None)
     for fresh in (False, True):
