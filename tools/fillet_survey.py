@@ -4,12 +4,15 @@ kept and why), the worst continuity over its trimlines, whether the solid is val
 time, and the same check on OCCT's own fillet of the same edges. With --validation it also times
 OCCT's validity checks on the filleted shaft-on-plate solid. With --all-edges it fillets
 every edge of some parts instead (the corners filled, the fillets kept and why); with
---random N, the junctions of N random parts (bosses, holes, cones, spheres on a plate).
+--random N, the junctions of N random parts (bosses, holes, cones, spheres on a plate);
+with --random-edges N, random sets of edges of N random blocks (corners where fillets
+meet, convex and concave).
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
-       [--validation] [--all-edges] [--random N [--seed S]]
+       [--validation] [--all-edges] [--random N | --random-edges N [--seed S]]
 """
 import argparse
+import math
 import os
 import statistics
 import sys
@@ -277,30 +280,68 @@ def random_part(rng):
     return kind, s, names(s, junction), radius
 
 
-def random_survey(count, seed):
-    """Fillet the junctions of `count` random parts (random_part, seeded): lists those
-    not G2, valid and passing the BOP check, and the errors, then the totals."""
+def random_block(rng):
+    """(kind, solid, names of a random set of its edges, radius): a box, an L block, a
+    regular prism, a step or a box with a round boss, of random size, with 1 to all of
+    its edges selected, at R = 3 to 20 % of its smallest extent."""
+    a, b, c = rng.uniform(5, 20), rng.uniform(5, 20), rng.uniform(5, 20)
+    kind = rng.choice(["box", "L block", "prism", "step", "box with a boss"])
+    if kind == "box":
+        s = Part.makeBox(a, b, c)
+    elif kind == "L block":
+        s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.4 * a, b, 2 * c)).removeSplitter()
+    elif kind == "prism":
+        n = rng.choice([3, 5, 6, 8])
+        pts = [V(a * math.cos(2 * math.pi * k / n), a * math.sin(2 * math.pi * k / n), 0)
+               for k in range(n + 1)]
+        s = Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, c))
+    elif kind == "step":
+        s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.5 * a, b, 0.5 * c, V(a, 0, 0)))
+        s = s.removeSplitter()
+    else:
+        s = Part.makeBox(a, b, c).fuse(Part.makeCylinder(0.25 * min(a, b), c,
+                                                         V(0.5 * a, 0.5 * b, c)))
+        s = s.removeSplitter()
+    edges = names(s, lambda e: not e.Degenerated
+                  and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))
+    chosen = rng.sample(edges, rng.randint(1, len(edges)))
+    box = s.BoundBox
+    r = round(rng.uniform(0.03, 0.2) * min(box.XLength, box.YLength, box.ZLength), 3)
+    return kind, s, sorted(chosen, key=lambda e: int(e[4:])), r
+
+
+def random_survey(count, seed, make=random_part):
+    """Fillet `count` random parts (make(rng), seeded): lists those where a trimline is
+    not G2, a fillet is kept as OCCT's, the solid is not valid or does not pass the
+    BOP check, and the errors (as where OCCT's own fillet fails), then the totals."""
     import random
     rng = random.Random(seed)
     totals = {}
     for k in range(count):
-        kind, s, edges, r = random_part(rng)
+        kind, s, edges, r = make(rng)
         if len(s.Solids) != 1 or not edges:
-            outcome = "skipped (no single solid, or no junction edge)"
+            outcome = "skipped (no single solid, or no edge)"
         else:
             try:
+                t0 = time.perf_counter()
                 solid, rep = C2Blend.fillet_report(s, edges, r)
-                ok = rep["verdict"] == "G2" and solid.isValid() and \
-                    rep["solid_check"] == "passes BRepCheck and the BOP check"
-                outcome = "G2, valid, passes the BOP check" if ok else "other"
-                if not ok:
-                    print("%d %s R=%g: %s, %s; %s" % (k, kind, r, rep["verdict"],
-                                                     rep["solid_check"], "; ".join(
-                                                         x["reason"] for x in
-                                                         rep["kept_occt_faces"])))
+                seconds = time.perf_counter() - t0
+                kept = [x for x in rep["kept_occt_faces"] if not x["where"].startswith(
+                    "corner patch")]
+                ok = all(t["verdict"] == "G2" for t in rep["trimlines"]) and not kept and \
+                    solid.isValid() and rep["solid_check"] == "passes BRepCheck and the BOP check"
+                outcome = ("G2 at every trimline, nothing kept as OCCT's, valid, passes the "
+                           "BOP check" if ok else "other")
+                corners = rep["corner_patches"]
+                seam = " (%d corners filled, seams within %.1e rad)" % (
+                    len(corners), max(c["g1"] for c in corners)) if corners else ""
+                if not ok or seconds > 10:
+                    print("%d %s, %d edge(s), R=%g: %s%s, %s, %.1f s; %s"
+                          % (k, kind, len(edges), r, rep["verdict"], seam, rep["solid_check"],
+                             seconds, "; ".join(sorted({x["reason"] for x in kept}))))
             except C2Blend.Error as ex:
                 outcome = "error"
-                print("%d %s R=%g: error: %s" % (k, kind, r, ex))
+                print("%d %s, %d edge(s), R=%g: error: %s" % (k, kind, len(edges), r, ex))
         totals[outcome] = totals.get(outcome, 0) + 1
     for outcome, n in sorted(totals.items()):
         print("%4d %s" % (n, outcome))
@@ -337,10 +378,15 @@ def main():
                     help="fillet every edge of some parts instead")
     ap.add_argument("--random", type=int, metavar="N",
                     help="instead, fillet the junctions of N random parts")
+    ap.add_argument("--random-edges", type=int, metavar="N",
+                    help="instead, fillet random sets of edges of N random blocks")
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
     a = ap.parse_args()
     if a.random:
         random_survey(a.random, a.seed)
+        return
+    if a.random_edges:
+        random_survey(a.random_edges, a.seed, random_block)
         return
     if a.all_edges:
         all_edges()
