@@ -919,6 +919,55 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
         fl.fillet(shapes.box(), ["Edge1"], 2.0, label="Box")
 
 
+def test_edges_on_which_occt_fails_together_are_named():
+    """The step (shapes.step): OCCT's fillet of its concave edge and the two convex edges
+    rising from its ends fails at every radius, though it succeeds on any two of them
+    (checked here on OCCT itself). Selected with two edges far from them, with which it
+    still fails, the message names the three, and the two vertices where they meet."""
+    s, concave, _ = shapes.step()
+    rising = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+              if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XMax < 15 + 1e-9
+              and e.BoundBox.ZMin > 10 - 1e-9 and e.BoundBox.ZLength > 9]
+    assert len(rising) == 2
+    three = sorted([concave] + rising, key=lambda n: int(n[4:]))
+
+    def occt_fails(names):
+        try:
+            return not s.makeFillet(1.0, [s.getElement(n) for n in names]).isValid()
+        except Part.OCCError:
+            return True
+    assert occt_fails(three)
+    assert not any(occt_fails([a, b]) for a in three for b in three if a < b)
+    far = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)  # the top's edge at x = 0,
+           if e.BoundBox.XMax < 1e-9 and e.BoundBox.ZMin > 20 - 1e-9  # the bottom's at
+           or e.BoundBox.XMin > 30 - 1e-9 and e.BoundBox.ZMax < 1e-9]  # x = 30
+    assert len(far) == 2
+    with pytest.raises(C2BlendError) as info:
+        fl.fillet(s, [far[0]] + three + [far[1]], 1.0, label="Step")
+    m = re.search(r"the rolling ball cannot follow these edges, whatever the radius\. It "
+                  r"fails on Step\.%s, Step\.%s and Step\.%s together, where they meet at "
+                  r"(\(.*\)) and (\(.*\)), though it succeeds at radius 1 on any 2 of them$"
+                  % tuple(three), str(info.value))
+    assert m, str(info.value)
+    assert sorted(m.groups()) == ["(15, 0, 10)", "(15, 20, 10)"]
+
+
+def test_an_edge_on_which_occt_fails_alone_is_named(monkeypatch):
+    """Fault injection: OCCT's fillet fails whenever the box's Edge3 is among the edges;
+    of the three selected, the message names that one."""
+    real = fl._rolling_ball
+
+    def rolling_ball(shape, edges, radius):
+        if any(e.isSame(shape.Edges[2]) for e in edges):
+            return None, "injected"
+        return real(shape, edges, radius)
+
+    monkeypatch.setattr(fl, "_rolling_ball", rolling_ball)
+    with pytest.raises(C2BlendError, match=r"whatever the radius\. It fails on Box\.Edge3 "
+                                           r"alone$"):
+        fl.fillet(shapes.box(), ["Edge1", "Edge3", "Edge5"], 2.0, label="Box")
+
+
 def test_invalid_input_is_named_when_the_result_fails_the_check():
     """A rib touching a boss along a line: the BOP check finds the input
     self-intersecting, and the fillet of an edge far from it fails the check too. The

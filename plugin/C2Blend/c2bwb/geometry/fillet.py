@@ -1627,11 +1627,15 @@ def _invalid_input(shape, msg):
             % (msg, "; BRepCheck: %s" % found if found and found != bc.IN_CONTEXT else ""))
 
 
-def _rolling_ball_failure(shape, edges, radius, msg):
-    """The message for a failed rolling-ball fillet, with the radius nearest to `radius`
-    that OCCT accepts on these edges: halving from radius down to radius / 1024, else
-    doubling up to the shape's diagonal (a radius near OCCT's tolerance fails too), then
-    6 bisections (about 1 % from the limit); or the statement that no radius works."""
+def _rolling_ball_failure(shape, names, radius, msg, label):
+    """The message for a failed rolling-ball fillet of the edges `names` ([(name,
+    Part.Edge)]), with the radius nearest to `radius` that OCCT accepts on these edges:
+    halving from radius down to radius / 1024, else doubling up to the shape's diagonal
+    (a radius near OCCT's tolerance fails too), then 6 bisections (about 1 % from the
+    limit); or the statement that no radius works, with the edges it fails on together
+    (_failing_set)."""
+    edges = [e for _, e in names]
+
     def works(r):
         return _rolling_ball(shape, edges, r)[0] is not None
 
@@ -1645,13 +1649,45 @@ def _rolling_ball_failure(shape, edges, radius, msg):
         ok = next((r for r in ups if works(r)), None)
         if ok is None:
             return ("%s, and so does every radius from %.3g to %.3g: the rolling ball cannot "
-                    "follow these edges, whatever the radius" % (head, radius / 1024, diag))
+                    "follow these edges, whatever the radius%s"
+                    % (head, radius / 1024, diag, _failing_set(shape, names, radius, label)))
         bad = ok / 2
     for _ in range(6):
         mid = math.sqrt(ok * bad)
         ok, bad = (mid, bad) if works(mid) else (ok, mid)
     return ("%s; radius %g is too %s here: OCCT accepts %.3g but not %.3g on these "
             "edges" % (head, radius, "large" if ok < radius else "small", ok, bad))
+
+
+def _failing_set(shape, names, radius, label):
+    """Where OCCT's fillet of the edges `names` ([(name, Part.Edge)]) fails at `radius`,
+    for messages: '. It fails on L.EdgeA alone' or '. It fails on L.EdgeA, L.EdgeB and
+    L.EdgeC together, where they meet at (x, y, z) and ..., though it succeeds at radius
+    R on any 2 of them' ('' for a single edge). Each edge is left out in turn, for good
+    where the fillet of the rest still fails (a few milliseconds per fillet), so that
+    the fillet succeeds without any one of those that remain. On an L block, a concave
+    edge and the two convex edges rising from its ends fail together at every radius,
+    and any two of them succeed."""
+    if len(names) == 1:
+        return ""
+    rest = list(names)
+    for item in names:
+        fewer = [x for x in rest if x is not item]
+        if fewer and _rolling_ball(shape, [e for _, e in fewer], radius)[0] is None:
+            rest = fewer
+    listed = ["%s.%s" % (label, n) for n, _ in rest]
+    if len(rest) == 1:
+        return ". It fails on %s alone" % listed[0]
+    meet = []
+    for i, (_, e) in enumerate(rest):
+        for v in e.Vertexes:
+            if any(v.isSame(w) for _, g in rest[i + 1:] for w in g.Vertexes) and \
+                    not any(v.isSame(m) for m in meet):
+                meet.append(v)
+    return (". It fails on %s and %s together%s, though it succeeds at radius %g on %s"
+            % (", ".join(listed[:-1]), listed[-1], ", where they meet at %s" % " and ".join(
+                "(%.4g, %.4g, %.4g)" % tuple(v.Point) for v in meet) if meet else "", radius,
+               "any %d of them" % (len(rest) - 1) if len(rest) > 2 else "either alone"))
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),
@@ -1714,7 +1750,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
     if result is None and not shape.isValid():
         raise C2BlendError(_invalid_input(shape, msg), label)
     if result is None:
-        raise C2BlendError(_rolling_ball_failure(shape, selected, radius, msg), where_all,
+        raise C2BlendError(_rolling_ball_failure(shape, names, radius, msg, label), where_all,
                            "radius")
     t_occt = time.perf_counter() - t0
     fillet_faces = new_faces(shape, result)
