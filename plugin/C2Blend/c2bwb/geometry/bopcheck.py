@@ -321,8 +321,8 @@ def _server(slot):
 def _checked(shape, seconds, meanwhile=None):
     """The check's findings, None when it passes: by the check server, started when
     needed, killed when the check does not finish in time (`seconds` of its processor
-    time, _Server.overran), replaced once when it has ended. Where no server can start, the check
-    runs in this process, without a time limit. Raises Unfinished."""
+    time, _Server.overran), replaced once when it has ended. Where no server can start,
+    the check runs in this process, without a time limit. Raises Unfinished."""
     meanwhile = meanwhile or (lambda: None)
     for fresh in (False, True):
         if fresh:

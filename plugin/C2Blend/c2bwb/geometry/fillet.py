@@ -1703,7 +1703,7 @@ def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1
     fit's error in the normal must stay well below the G1 criterion (1e-8 rad): at 1e-7
     the pipe tee's normal angle was 7e-9 rad, at 1e-8 it is 3e-10.
     bop: run OCCT's BOP check on the result (False for a preview: it is half the time
-    of a many-edge fillet, and can take its 30 s limit; BRepCheck still runs).
+    of a many-edge fillet, and can take its limit, bopcheck.LIMIT; BRepCheck still runs).
     Returns (Part.Solid, report dict). Raises C2BlendError naming `label` and the edge.
     Seams and edges between tangent faces among other edges are left out, as OCCT's
     fillet does, and listed in the report's "skipped_edges" with the reason.
