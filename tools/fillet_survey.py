@@ -6,10 +6,13 @@ OCCT's validity checks on the filleted shaft-on-plate solid. With --all-edges it
 every edge of some parts instead (the corners filled, the fillets kept and why); with
 --random N, the junctions of N random parts (bosses, holes, cones, spheres on a plate);
 with --random-edges N, random sets of edges of N random blocks (corners where fillets
-meet, convex and concave).
+meet, convex and concave). With --bop-times, the processor and clock time of OCCT's BOP
+check on a filleted pentagonal prism and on its plate fillings' neighbourhoods, which
+bopcheck's time limits allow for.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--all-edges] [--random N | --random-edges N [--seed S]]
+       [--bop-times]
 """
 import argparse
 import math
@@ -371,6 +374,37 @@ def validation():
           % (len(nbrs), median_ms(lambda: local.check(True))))
 
 
+def bop_times():
+    """OCCT's BOP check (check(True)) in this process on the pentagonal prism filleted
+    (shapes.pentagonal_prism) and on the neighbourhood of each of its plate fillings
+    (bopcheck._neighbourhood): processor time (user and system, all threads: OCCT
+    checks on several) and time on the clock."""
+    import resource
+    from c2bwb.geometry import bopcheck
+
+    def timed(shape):
+        r0, t0 = resource.getrusage(resource.RUSAGE_SELF), time.perf_counter()
+        try:
+            shape.check(True)
+        except Exception:  # noqa: BLE001 - OCCT's findings; only the time matters here
+            pass
+        r1 = resource.getrusage(resource.RUSAGE_SELF)
+        return (r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime,
+                time.perf_counter() - t0)
+
+    s, edges, r = shapes.pentagonal_prism()
+    solid, rep = C2Blend.fillet_report(s, edges, r)
+    print("OCCT's BOP check on the pentagonal prism, %d edges filleted at R = %g "
+          "(processor s, clock s):" % (len(edges), r))
+    print("  the whole solid: %.1f, %.1f" % timed(solid))
+    for c in rep["corner_patches"]:
+        near = bopcheck._neighbourhood(solid, solid.getElement(c["face"]))
+        print("  the neighbourhood of the plate filling at the %s: %.1f, %.1f"
+              % (c["where"], *timed(near)))
+    print("limits (processor s): whole %g, neighbourhood %g"
+          % (bopcheck.LIMIT, bopcheck.NEAR_LIMIT))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--validation", action="store_true", help="also time OCCT's validity checks")
@@ -381,12 +415,17 @@ def main():
     ap.add_argument("--random-edges", type=int, metavar="N",
                     help="instead, fillet random sets of edges of N random blocks")
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
+    ap.add_argument("--bop-times", action="store_true",
+                    help="instead, time OCCT's BOP check on a filleted pentagonal prism")
     a = ap.parse_args()
     if a.random:
         random_survey(a.random, a.seed)
         return
     if a.random_edges:
         random_survey(a.random_edges, a.seed, random_block)
+        return
+    if a.bop_times:
+        bop_times()
         return
     if a.all_edges:
         all_edges()

@@ -428,6 +428,17 @@ def rounded_box(tilt=0.0):
                if any(e.isSame(x) for x in top.Edges)]
 
 
+def pentagonal_prism():
+    """A regular pentagonal prism, circumradius 17.576 and 15.975 high, with 11 of its 15
+    edges selected at R = 0.863 (five corners, plate fillings whose neighbourhoods take
+    OCCT's BOP check seconds of processor time: bopcheck.NEAR_LIMIT). Returns (solid,
+    edge names, radius)."""
+    pts = [V(17.576 * math.cos(0.4 * math.pi * k), 17.576 * math.sin(0.4 * math.pi * k), 0)
+           for k in range(6)]
+    s = Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 15.975))
+    return s, ["Edge%d" % k for k in (1, 2, 3, 4, 6, 7, 8, 11, 13, 14, 15)], 0.863
+
+
 def rounded_hexagon():
     """A regular hexagonal prism (circumradius 10, height 10) whose six vertical edges
     are rounded (OCCT's fillet, r = 2): its top outline runs along planes and 60 degree
