@@ -921,9 +921,11 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
 
 def test_edges_on_which_occt_fails_together_are_named():
     """The step (shapes.step): OCCT's fillet of its concave edge and the two convex edges
-    rising from its ends fails at every radius, though it succeeds on any two of them
-    (checked here on OCCT itself). Selected with two edges far from them, with which it
-    still fails, the message names the three, and the two vertices where they meet."""
+    rising from its ends fails at every radius, though it succeeds on any two of them,
+    and on the three with the third edge at each of the two vertices (the lower block's
+    top edges from x = 15 to 30), all checked here on OCCT itself. Selected with two
+    edges far from them, with which it still fails, the message names the three, the
+    two vertices where they meet, and the two edges that make it succeed."""
     s, concave, _ = shapes.step()
     rising = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
               if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XMax < 15 + 1e-9
@@ -936,8 +938,11 @@ def test_edges_on_which_occt_fails_together_are_named():
             return not s.makeFillet(1.0, [s.getElement(n) for n in names]).isValid()
         except Part.OCCError:
             return True
+    third = [e for e in s.Edges if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XLength > 14
+             and e.BoundBox.ZMin > 10 - 1e-9 and e.BoundBox.ZMax < 10 + 1e-9]
     assert occt_fails(three)
     assert not any(occt_fails([a, b]) for a in three for b in three if a < b)
+    assert not occt_fails(three + [ck.element_name(s, e, "Edge") for e in third])
     far = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)  # the top's edge at x = 0,
            if e.BoundBox.XMax < 1e-9 and e.BoundBox.ZMin > 20 - 1e-9  # the bottom's at
            or e.BoundBox.XMin > 30 - 1e-9 and e.BoundBox.ZMax < 1e-9]  # x = 30
@@ -946,10 +951,43 @@ def test_edges_on_which_occt_fails_together_are_named():
         fl.fillet(s, [far[0]] + three + [far[1]], 1.0, label="Step")
     m = re.search(r"the rolling ball cannot follow these edges, whatever the radius\. It "
                   r"fails on Step\.%s, Step\.%s and Step\.%s together, where they meet at "
-                  r"(\(.*\)) and (\(.*\)), though it succeeds at radius 1 on any 2 of them$"
+                  r"(\(.*\)) and (\(.*\)), though it succeeds at radius 1 on any 2 of them; "
+                  r"with the edge from (.*) and the edge from (.*) selected too, it succeeds$"
                   % tuple(three), str(info.value))
     assert m, str(info.value)
-    assert sorted(m.groups()) == ["(15, 0, 10)", "(15, 20, 10)"]
+    assert sorted(m.groups()[:2]) == ["(15, 0, 10)", "(15, 20, 10)"]
+    assert sorted(m.groups()[2:]) == sorted("(%g, %g, %g) to (%g, %g, %g)" % (
+        tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in third)
+
+
+def test_a_vertex_of_a_concave_and_a_convex_fillet_names_its_third_edge():
+    """The step's concave edge and one convex edge rising from its end: OCCT puts a face
+    between the two fillets at their vertex, meeting them at an angle, and they are kept
+    as OCCT's. The reason names the third edge at that vertex (the lower block's top
+    edge from x = 15 to 30); selected too, the three fillets meet at a corner, which is
+    filled: every fillet blended, every trimline G2."""
+    s, concave, _ = shapes.step()
+    rising = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                  if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XMax < 15 + 1e-9
+                  and e.BoundBox.YMax < 1e-9 and e.BoundBox.ZLength > 9)
+    third = next(e for e in s.Edges if e.BoundBox.XMin > 15 - 1e-9
+                 and e.BoundBox.XLength > 14 and e.BoundBox.YMax < 1e-9
+                 and e.BoundBox.ZMin > 10 - 1e-9 and e.BoundBox.ZMax < 10 + 1e-9)
+    solid, rep = C2Blend.fillet_report(s, [concave, rising], 1.0, label="Step")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    (between,) = [k for k in rep["kept_occt_faces"] if k["where"].startswith("Step, OCCT's")]
+    assert between["reason"].endswith(
+        "; with the edge from (%g, %g, %g) to (%g, %g, %g) selected too, the fillets meet at "
+        "a corner there, which C2Blend fills"
+        % (tuple(third.Vertexes[0].Point) + tuple(third.Vertexes[-1].Point))), between
+    solid, rep = C2Blend.fillet_report(
+        s, [concave, rising, ck.element_name(s, third, "Edge")], 1.0, label="Step")
+    assert_valid(solid)
+    assert not rep["kept_occt_faces"] and len(rep["blends"]) == 3
+    assert all(t["verdict"] == "G2" for t in rep["trimlines"])
+    (corner,) = rep["corner_patches"]
+    assert corner["edges"] == 4 and corner["g1"] < fl.cn.MAX_SEAM
 
 
 def test_an_edge_on_which_occt_fails_alone_is_named(monkeypatch):

@@ -1684,10 +1684,31 @@ def _failing_set(shape, names, radius, label):
             if any(v.isSame(w) for _, g in rest[i + 1:] for w in g.Vertexes) and \
                     not any(v.isSame(m) for m in meet):
                 meet.append(v)
-    return (". It fails on %s and %s together%s, though it succeeds at radius %g on %s"
+    return (". It fails on %s and %s together%s, though it succeeds at radius %g on %s%s"
             % (", ".join(listed[:-1]), listed[-1], ", where they meet at %s" % " and ".join(
                 "(%.4g, %.4g, %.4g)" % tuple(v.Point) for v in meet) if meet else "", radius,
-               "any %d of them" % (len(rest) - 1) if len(rest) > 2 else "either alone"))
+               "any %d of them" % (len(rest) - 1) if len(rest) > 2 else "either alone",
+               _with_others(shape, [e for _, e in names], meet, radius,
+                            "; with %s selected too, it succeeds")))
+
+
+def _with_others(shape, edges, vertices, radius, phrase):
+    """phrase % 'the edge from (x, y, z) to (x, y, z) and ...' for the edges of `shape`
+    between two faces that end at any of `vertices` and are not among `edges`, where
+    OCCT's fillet at `radius` succeeds with them added to `edges`; '' where there are
+    none or it fails. The edges are named by their ends: on a compound, the names of
+    the edges of one solid are not the user's."""
+    others = []
+    for v in vertices:
+        for e in shape.ancestorsOfType(v, Part.Edge):
+            if not e.Degenerated and len(ck.edge_faces(shape, e)) == 2 and \
+                    not any(e.isSame(x) for x in edges + others):
+                others.append(e)
+    if not others or _rolling_ball(shape, edges + others, radius)[0] is None:
+        return ""
+    return phrase % " and ".join(
+        "the edge from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)"
+        % (tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in others)
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),
@@ -1769,8 +1790,14 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         where = ", ".join("%s.%s" % (label, n) for n, _ in edges) or \
             _occt_face_at(label, chain.faces[0])
         if chain.corner:
-            kept.append({"where": where,
-                         "reason": chain.corner + _tangent_ends(shape, label, edges)})
+            reason = chain.corner + _tangent_ends(shape, label, edges)
+            if any(m.between for m in chain.members):
+                # the vertex it stands for: the solid's vertex nearest to it
+                v = min(shape.Vertexes, key=lambda x: chain.faces[0].distToShape(x)[0])
+                reason += _with_others(shape, [e for _, e in names], [v], radius,
+                                       "; with %s selected too, the fillets meet at a "
+                                       "corner there, which C2Blend fills")
+            kept.append({"where": where, "reason": reason})
             continue
         try:
             new = solve_chain(chain, radius, where, continuity, shape_params, tension,

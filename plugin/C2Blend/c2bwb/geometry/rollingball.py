@@ -102,6 +102,9 @@ class RollingBallFace:
     corners: [(edge, corner patch)], tangent joins to corner patches (chains(); the
     patch's RollingBallFace);
     corner: None, or a string saying why the face cannot be replaced (corner patch).
+    between: True for OCCT's face between two or more fillets that it meets at an angle
+    (where a concave and a convex fillet meet at a vertex whose third edge is not
+    filleted), which no filling replaces.
     patch: True for a corner patch: a face with two or more tangent joins to other
     rolling-ball faces but not two contacts (where three fillets meet at a vertex);
     touches: a corner patch's faces of the solid (not fillets) that share a vertex
@@ -115,6 +118,7 @@ class RollingBallFace:
         self.surface = face.Surface  # kept: getting it costs as much as an evaluation
         self.contacts, self.ends, self.links, self.corners = [], [], [], []
         self.corner = None
+        self.between = False
         met = 0  # fillets met at an angle
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
@@ -141,6 +145,7 @@ class RollingBallFace:
                     if not any(f.isSame(g) for g in fillet_faces + self.touches):
                         self.touches.append(f)
         if self.corner is None and len(self.contacts) != 2 and met >= 2 and not self.patch:
+            self.between = True
             self.corner = ("it is OCCT's face between %d fillets at a vertex, which it "
                            "meets at an angle, not tangent: no corner patch that a filling "
                            "replaces, so the fillets there are kept with it" % met)
