@@ -919,6 +919,28 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
         fl.fillet(shapes.box(), ["Edge1"], 2.0, label="Box")
 
 
+def _step_vertex_edges(s):
+    """Of the step (shapes.step), by y (0, then 20): the convex edges rising from the
+    concave edge's ends (names), and the lower block's top edges from x = 15 to 30, the
+    third edge at each of those two vertices (Part.Edge)."""
+    def at(e):
+        return e.BoundBox.YMin
+    rising = sorted((e for e in s.Edges if e.BoundBox.XMin > 15 - 1e-9
+                     and e.BoundBox.XMax < 15 + 1e-9 and e.BoundBox.ZMin > 10 - 1e-9
+                     and e.BoundBox.ZLength > 9), key=at)
+    third = sorted((e for e in s.Edges if e.BoundBox.XMin > 15 - 1e-9
+                    and e.BoundBox.XLength > 14 and e.BoundBox.ZMin > 10 - 1e-9
+                    and e.BoundBox.ZMax < 10 + 1e-9), key=at)
+    assert len(rising) == len(third) == 2
+    return [ck.element_name(s, e, "Edge") for e in rising], third
+
+
+def _from_to(edge):
+    """'(x, y, z) to (x, y, z)': the ends of edge, as messages name an edge."""
+    return "(%g, %g, %g) to (%g, %g, %g)" % (tuple(edge.Vertexes[0].Point)
+                                             + tuple(edge.Vertexes[-1].Point))
+
+
 def test_edges_on_which_occt_fails_together_are_named():
     """The step (shapes.step): OCCT's fillet of its concave edge and the two convex edges
     rising from its ends fails at every radius, though it succeeds on any two of them,
@@ -927,10 +949,7 @@ def test_edges_on_which_occt_fails_together_are_named():
     edges far from them, with which it still fails, the message names the three, the
     two vertices where they meet, and the two edges that make it succeed."""
     s, concave, _ = shapes.step()
-    rising = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-              if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XMax < 15 + 1e-9
-              and e.BoundBox.ZMin > 10 - 1e-9 and e.BoundBox.ZLength > 9]
-    assert len(rising) == 2
+    rising, third = _step_vertex_edges(s)
     three = sorted([concave] + rising, key=lambda n: int(n[4:]))
 
     def occt_fails(names):
@@ -938,8 +957,6 @@ def test_edges_on_which_occt_fails_together_are_named():
             return not s.makeFillet(1.0, [s.getElement(n) for n in names]).isValid()
         except Part.OCCError:
             return True
-    third = [e for e in s.Edges if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XLength > 14
-             and e.BoundBox.ZMin > 10 - 1e-9 and e.BoundBox.ZMax < 10 + 1e-9]
     assert occt_fails(three)
     assert not any(occt_fails([a, b]) for a in three for b in three if a < b)
     assert not occt_fails(three + [ck.element_name(s, e, "Edge") for e in third])
@@ -956,8 +973,7 @@ def test_edges_on_which_occt_fails_together_are_named():
                   % tuple(three), str(info.value))
     assert m, str(info.value)
     assert sorted(m.groups()[:2]) == ["(15, 0, 10)", "(15, 20, 10)"]
-    assert sorted(m.groups()[2:]) == sorted("(%g, %g, %g) to (%g, %g, %g)" % (
-        tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in third)
+    assert sorted(m.groups()[2:]) == sorted(_from_to(e) for e in third)
 
 
 def test_a_vertex_of_a_concave_and_a_convex_fillet_names_its_third_edge():
@@ -967,20 +983,14 @@ def test_a_vertex_of_a_concave_and_a_convex_fillet_names_its_third_edge():
     edge from x = 15 to 30); selected too, the three fillets meet at a corner, which is
     filled: every fillet blended, every trimline G2."""
     s, concave, _ = shapes.step()
-    rising = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                  if e.BoundBox.XMin > 15 - 1e-9 and e.BoundBox.XMax < 15 + 1e-9
-                  and e.BoundBox.YMax < 1e-9 and e.BoundBox.ZLength > 9)
-    third = next(e for e in s.Edges if e.BoundBox.XMin > 15 - 1e-9
-                 and e.BoundBox.XLength > 14 and e.BoundBox.YMax < 1e-9
-                 and e.BoundBox.ZMin > 10 - 1e-9 and e.BoundBox.ZMax < 10 + 1e-9)
+    (rising, _), (third, _) = _step_vertex_edges(s)  # those at y = 0
     solid, rep = C2Blend.fillet_report(s, [concave, rising], 1.0, label="Step")
     assert_valid(solid)
     assert not rep["blends"] and rep["verdict"] == "G1"
     (between,) = [k for k in rep["kept_occt_faces"] if k["where"].startswith("Step, OCCT's")]
     assert between["reason"].endswith(
-        "; with the edge from (%g, %g, %g) to (%g, %g, %g) selected too, the fillets meet at "
-        "a corner there, which C2Blend fills"
-        % (tuple(third.Vertexes[0].Point) + tuple(third.Vertexes[-1].Point))), between
+        "; with the edge from %s selected too, the fillets meet at a corner there, which "
+        "C2Blend fills" % _from_to(third)), between
     solid, rep = C2Blend.fillet_report(
         s, [concave, rising, ck.element_name(s, third, "Edge")], 1.0, label="Step")
     assert_valid(solid)
