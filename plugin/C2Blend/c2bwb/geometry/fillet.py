@@ -1663,7 +1663,9 @@ def _failing_set(shape, names, radius, label):
     """Where OCCT's fillet of the edges `names` ([(name, Part.Edge)]) fails at `radius`,
     for messages: '. It fails on L.EdgeA alone' or '. It fails on L.EdgeA, L.EdgeB and
     L.EdgeC together, where they meet at (x, y, z) and ..., though it succeeds at radius
-    R on any 2 of them' ('' for a single edge). Each edge is left out in turn, for good
+    R on any 2 of them', then, where OCCT's fillet succeeds with the other edges at those
+    vertices added (_with_others), '; with the edge from ... selected too, it succeeds'
+    ('' for a single edge). Each edge is left out in turn, for good
     where the fillet of the rest still fails (a few milliseconds per fillet), so that
     the fillet succeeds without any one of those that remain. On an L block, a concave
     edge and the two convex edges rising from its ends fail together at every radius,
