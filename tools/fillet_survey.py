@@ -313,6 +313,64 @@ def random_block(rng):
     return kind, s, sorted(chosen, key=lambda e: int(e[4:])), r
 
 
+def random_machined(rng):
+    """(kind, solid, names of a random set of its edges, radius): a block machined by 1 to
+    3 features (a through or blind hole, a pocket, a slot, a boss, a side hole or a
+    chamfered top edge) of random size and place, with 1 to 6 of its edges selected, at
+    R = 3 to 15 % of the smallest feature."""
+    a, b, c = rng.uniform(20, 40), rng.uniform(20, 40), rng.uniform(6, 15)
+    s = Part.makeBox(a, b, c)
+    kinds, sizes = [], [c]
+    for _ in range(rng.randint(1, 3)):
+        kind = rng.choice(["through hole", "blind hole", "pocket", "slot", "boss",
+                           "side hole", "chamfer"])
+        r = rng.uniform(1.5, 0.2 * min(a, b))
+        x, y = rng.uniform(r + 2, a - r - 2), rng.uniform(r + 2, b - r - 2)
+        if kind == "through hole":
+            s = s.cut(Part.makeCylinder(r, c + 2, V(x, y, -1)))
+        elif kind == "blind hole":
+            depth = rng.uniform(0.3, 0.7) * c
+            s = s.cut(Part.makeCylinder(r, depth + 1, V(x, y, c - depth)))
+            sizes.append(depth)
+        elif kind == "pocket":
+            depth = rng.uniform(0.3, 0.7) * c
+            s = s.cut(Part.makeBox(2 * r, 1.5 * r, depth + 1, V(x - r, y - 0.75 * r, c - depth)))
+            sizes.append(depth)
+        elif kind == "slot":
+            w, length = 0.5 * r, rng.uniform(0.5, 1.5) * r
+            depth = rng.uniform(0.3, 0.7) * c
+            tool = Part.makeBox(length, 2 * w, depth + 1, V(x - 0.5 * length, y - w, c - depth))
+            for end in (-0.5, 0.5):
+                tool = tool.fuse(Part.makeCylinder(w, depth + 1,
+                                                   V(x + end * length, y, c - depth)))
+            s = s.cut(tool)
+            sizes += [depth, w]
+        elif kind == "boss":
+            height = rng.uniform(0.3, 1.0) * c
+            s = s.fuse(Part.makeCylinder(r, height, V(x, y, c)))
+            sizes.append(height)
+        elif kind == "side hole":
+            r = min(r, 0.3 * c)
+            s = s.cut(Part.makeCylinder(r, a + 2, V(-1, y, 0.5 * c), V(1, 0, 0)))
+        else:
+            tops = [e for e in s.Edges if e.BoundBox.ZMin > c - 1e-6 and
+                    isinstance(e.Curve, Part.Line)]
+            if not tops:
+                continue
+            try:
+                s = s.makeChamfer(rng.uniform(0.5, 2.0), [rng.choice(tops)])
+            except Part.OCCError:
+                continue
+        s = s.removeSplitter()
+        kinds.append(kind)
+        sizes.append(r)
+    edges = names(s, lambda e: not e.Degenerated
+                  and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))
+    chosen = rng.sample(edges, rng.randint(1, min(6, len(edges))))
+    r = round(rng.uniform(0.03, 0.15) * min(sizes), 3)
+    return " + ".join(kinds) or "block", s, sorted(chosen, key=lambda e: int(e[4:])), r
+
+
 def random_survey(count, seed, make=random_part):
     """Fillet `count` random parts (make(rng), seeded): lists those where a trimline is
     not G2, a fillet is kept as OCCT's, the solid is not valid or does not pass the
@@ -414,6 +472,8 @@ def main():
                     help="instead, fillet the junctions of N random parts")
     ap.add_argument("--random-edges", type=int, metavar="N",
                     help="instead, fillet random sets of edges of N random blocks")
+    ap.add_argument("--random-machined", type=int, metavar="N",
+                    help="instead, fillet random sets of edges of N random machined blocks")
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
     ap.add_argument("--bop-times", action="store_true",
                     help="instead, time OCCT's BOP check on a filleted pentagonal prism")
@@ -423,6 +483,9 @@ def main():
         return
     if a.random_edges:
         random_survey(a.random_edges, a.seed, random_block)
+        return
+    if a.random_machined:
+        random_survey(a.random_machined, a.seed, random_machined)
         return
     if a.bop_times:
         bop_times()
