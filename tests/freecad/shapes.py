@@ -489,6 +489,62 @@ def rounded_pocket():
     return s, names
 
 
+def pocket_into_hole():
+    """A 40 x 35 x 9 block with a through hole r = 3 at (30, 22) and a pocket 4 deep,
+    x from 22 to 31 and y from 16 to 24, whose floor edge at y = 24 runs into the hole.
+    Returns (solid, name of that floor edge)."""
+    s = Part.makeBox(40, 35, 9).cut(Part.makeCylinder(3, 11, V(30, 22, -1)))
+    s = s.cut(Part.makeBox(9, 8, 5, V(22, 16, 5))).removeSplitter()
+    name = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                if isinstance(e.Curve, Part.Line) and e.BoundBox.ZLength < 1e-9
+                and e.BoundBox.XLength > 1 and abs(e.BoundBox.ZMin - 5) < 1e-9
+                and abs(e.BoundBox.YMin - 24) < 1e-9)
+    return s, name
+
+
+def chamfered_box(c=0.78):
+    """A 30 x 34 x 14 box whose top edge at y = 34 is chamfered by c. Returns (solid,
+    name of the top edge at x = 0, name of the chamfer's lower edge, on the face
+    y = 34, name of the chamfer's end edge at x = 0)."""
+    b = Part.makeBox(30, 34, 14)
+    s = b.makeChamfer(c, [e for e in b.Edges if e.BoundBox.ZMin > 13.9
+                          and e.BoundBox.YMin > 33.9])
+
+    def find(pred):
+        return next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e.BoundBox))
+    return (s, find(lambda b: b.XMax < 1e-9 and b.ZMin > 13.9 and b.YLength > 10),
+            find(lambda b: abs(b.ZMax - 14 + c) < 1e-9 and b.ZLength < 1e-9
+                 and b.XLength > 10 and b.YMin > 33.9),
+            find(lambda b: b.XMax < 1e-9 and abs(b.ZLength - c) < 1e-9))
+
+
+def pocket_block():
+    """A 40 x 20 x 7 block with a pocket 5 deep, x from 15 to 23 and y from 10 to 17.
+    Returns (solid, name of the block's top edge at y = 0, name of the pocket's rim edge
+    at y = 17, name of the pocket's corner edge at (23, 17))."""
+    s = Part.makeBox(40, 20, 7).cut(Part.makeBox(8, 7, 6, V(15, 10, 2))).removeSplitter()
+
+    def find(pred):
+        return next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e.BoundBox))
+    return (s, find(lambda b: b.YMax < 1e-9 and b.ZMin > 7 - 1e-9 and b.XLength > 39),
+            find(lambda b: abs(b.YMin - 17) < 1e-9 and b.ZMin > 7 - 1e-9 and b.XLength > 7),
+            find(lambda b: abs(b.XMin - 23) < 1e-9 and abs(b.YMin - 17) < 1e-9
+                 and b.ZLength > 4))
+
+
+def boss_over_hole():
+    """A 25 x 24 x 10 block with a through hole r = 1.8 at (9, 9) and a boss r = 2, 5
+    high, at (11, 7) on its top, over part of the hole. Returns (solid, name of the
+    hole's rim arc, 2.807 long, between the top face and the hole), on which OCCT's
+    fillet crashes (a segmentation fault) at R = 0.01 and 0.1 and fails at 0.001."""
+    s = Part.makeBox(25, 24, 10).cut(Part.makeCylinder(1.8, 12, V(9, 9, -1)))
+    s = s.fuse(Part.makeCylinder(2, 5, V(11, 7, 10))).removeSplitter()
+    name = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Radius - 1.8) < 1e-9
+                and abs(e.BoundBox.ZMin - 10) < 1e-9 and abs(e.Length - 2.807) < 1e-3)
+    return s, name
+
+
 def as_nurbs(s, names):
     """(s.toNurbs() as a solid, the names of its edges at the given edges of s)."""
     points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter

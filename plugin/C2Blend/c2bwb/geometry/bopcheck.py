@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""OCCT's BOP argument check (TopoShape.check(True)) with a time limit.
+"""OCCT's BOP argument check (TopoShape.check(True)) with a time limit, and trial
+fillets (trial_fillet), both run in another process.
 
 OCCT 7.6's face-face intersection can walk without end on two B-spline faces that are
 tangent along their shared edge: IntWalk_PWalking::ExtendLineInCommonZone allocates as
@@ -34,11 +35,14 @@ whatever the number of processors and the load: OCCT checks on several threads, 
 processor time counts them all. A server that gets almost no processor time is given
 up all the same after WALL_FACTOR times the limit on the clock.
 """
+import atexit
 import json
 import os
 import select
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 import Part
@@ -64,7 +68,11 @@ WATCH_STEP = 0.05
 NO_ERROR = "No error"  # FreeCAD's word for a sub-shape whose own status is clean
 # the finding where FreeCAD names none: every sub-shape's own status is clean
 IN_CONTEXT = "BRepCheck rejects the shape as a whole, though each of its parts passes alone"
+# s of processor time for one trial fillet (OCCT's fillets of the parts tried took
+# milliseconds)
+TRIAL_LIMIT = 20.0
 PENDING = object()  # _Server.answer: no answer yet
+CRASHED = "OCCT's fillet crashed"  # trial_fillet: it closed the process that ran it
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "checkserver.py")
 
 
@@ -195,6 +203,37 @@ def _watched(shape, seconds, meanwhile, suspects):
     raise Unfinished("OCCT's BOP check did not finish %s" % late, stuck)
 
 
+def trial_fillet(shape, edges, radius):
+    """Whether OCCT's rolling-ball fillet of `edges` (edges of `shape`) at `radius` gives
+    a valid solid: (True, None), or (False, why not). Tried in a check server's
+    process, since OCCT's fillet builder can crash the process that runs it: a
+    segmentation fault in ChFi3d_Builder::IntersectMoreCorner at one radius of the
+    search for the radii OCCT accepts, on a block with a hole, a chamfer and a boss
+    (at the radius the user gave, OCCT had only failed), would have closed FreeCAD.
+    The server gets the shape exactly (_Server.fillet), once for successive trials on
+    it. Where no server can start, the fillet is tried in this process."""
+    indices = [next(i for i, x in enumerate(shape.Edges) if x.isSame(e)) for e in edges]
+    try:
+        server = _server("trial")
+        server.fillet(shape, radius, indices)
+        found = server.receive(TRIAL_LIMIT)
+    except Unfinished:
+        _stop("trial")
+        return False, "OCCT's fillet did not finish within %.0f s" % TRIAL_LIMIT
+    except (OSError, ValueError):  # no server, or it ended: crashed, or could not start
+        crashed = "trial" in _servers
+        _stop("trial")
+        if crashed:
+            return False, CRASHED
+        try:
+            result = shape.makeFillet(radius, edges)
+        except Exception as ex:  # noqa: BLE001 - OCCT's, in several classes
+            return False, str(ex) or type(ex).__name__
+        found = None if not result.isNull() and result.isValid() else \
+            "the result is not a valid solid"
+    return found is None, found
+
+
 def faulty(shape, faces, seconds, ignore=None):
     """Those of `faces` (faces of `shape`) in whose neighbourhood the BOP check finds
     something wrong (or does not finish within `seconds`): where the findings on the
@@ -230,12 +269,32 @@ class _Server:
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
         self.buffer = b""  # the part of an answer read so far
         self.started = (time.monotonic(), None)  # (clock, processor time) at the last send
+        self.filleted = None  # the shape of the last fillet request (held: its id stays)
+        self.folder = None  # where that shape is written for the server to read
 
     def send(self, shape):
         """Start checking shape. Raises OSError when the server has ended."""
         data = shape.exportBrepToString().encode()
         self.started = (time.monotonic(), _cpu(self.proc.pid))
         self.proc.stdin.write(b"%d\n" % len(data) + data)
+        self.proc.stdin.flush()
+
+    def fillet(self, shape, radius, indices):
+        """Start filleting the edges `indices` (0-based, of shape.Edges) of shape at
+        radius (checkserver.py). The shape goes in OCCT's binary format, by a file, and
+        not again when the last fillet request had it: BREP text rounds coordinates to
+        15 digits, and OCCT's fillet crashed on a solid where it only failed on that
+        solid read back from BREP text. Raises OSError when the server has ended."""
+        path = "-"
+        if shape is not self.filleted:
+            if self.folder is None:
+                self.folder = tempfile.mkdtemp(prefix="c2blend-trial-")
+            path = os.path.join(self.folder, "shape.brp")
+            shape.exportBinary(path)
+            self.filleted = shape
+        self.started = (time.monotonic(), _cpu(self.proc.pid))
+        self.proc.stdin.write(("fillet %r %s %s\n" % (
+            radius, ",".join(str(i) for i in indices), path)).encode())
         self.proc.stdin.flush()
 
     def used(self):
@@ -292,9 +351,11 @@ class _Server:
     def close(self):
         self.proc.kill()
         self.proc.wait()
+        if self.folder is not None:
+            shutil.rmtree(self.folder, ignore_errors=True)
 
 
-_servers = {}  # this process's check servers, once started: "whole" and "near"
+_servers = {}  # this process's check servers, once started: "whole", "near", "trial"
 
 
 def _cpu(pid):
@@ -358,11 +419,15 @@ def _checked(shape, seconds, meanwhile=None):
 
 
 def _stop(slot=None):
-    """Kill the check server in `slot` (all of them when None), where one runs."""
+    """Kill the check server in `slot` (all of them when None), where one runs, and
+    remove its files."""
     for key in [slot] if slot else list(_servers):
         server = _servers.pop(key, None)
         if server is not None:
             server.close()
+
+
+atexit.register(_stop)  # the trial server's folder, too
 
 
 def _check_here(shape, bop):

@@ -514,8 +514,8 @@ def _growth(face, edge, tol):
     _, corner, legs = min(spans, key=lambda c: c[0])
     try:  # OCCT makes a null face where the edge and legs bound no region
         region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
-        region.validate()
-    except Part.OCCError:
+        _validate(region)
+    except (Part.OCCError, ValueError):
         return None
     uv = [g.Surface.parameter(corner.Point) for g in (region, face)]
     if region.normalAt(*uv[0]).dot(face.normalAt(*uv[1])) < 0:
@@ -596,16 +596,20 @@ def _grown(face, section, whole, corner, region, tol):
                                  "face's two edges at its corner (%.6g, %.6g, %.6g)"
                                  % tuple(corner))
             moved.append(g)
-        rest = [e for e in w.Edges if not any(e.isSame(x) for x in at)]
+        drop = list(at)
         if whole is not section:
-            rest = [e for e in rest if not all(
+            drop += [e for e in w.Edges if not any(e.isSame(x) for x in at) and all(
                 whole.distToShape(Part.Vertex(q))[0] <= tol for q in _edge_points(e))]
-        swap.append((w, Part.Wire(Part.__sortEdges__(rest + moved + [whole]))))
+        wire = _rewired(w, drop, moved + [whole])
+        if wire is None:
+            raise ValueError("its boundary does not close again once grown to the end "
+                             "section at its corner (%.6g, %.6g, %.6g)" % tuple(corner))
+        swap.append((w, wire))
     # the face itself with the wire replaced: the kept edges keep their curves on its
     # surface, which a new face on a copy of the surface would lack. The fix adds the
     # new edges' curves on the surface.
     out = face.replaceShape(swap)
-    out.validate()
+    _validate(out)
     miss = abs(out.Area - area - region.Area)
     # OCCT's area is off by up to 9e-6 (relative) on a face with long B-spline edges (a
     # helical ridge's section by a cylinder's end plane: 2.7e-3 of 307 once grown, by
@@ -640,13 +644,30 @@ def _edge_on_face(edge, face, tol):
 
 
 def _consumed(edge, kept, tol):
-    """True when no part of edge lies on `kept` (the edges of OCCT's fillet result),
-    tested at its middle and at 1e-3 of its length from each end: an edge the fillet
-    only shortens keeps one end's neighbourhood, or its middle if shortened at both, as
-    an edge of the result. A face of the result may hold a consumed edge's end inside
-    it, where a fillet uncovers the face's corner (_parts)."""
-    return all(kept.distToShape(Part.Vertex(p))[0] > tol
-               for p in _edge_points(edge, (0.5, 1e-3, 1.0 - 1e-3)))
+    """True when no part of edge lies on `kept` (the edges of OCCT's fillet result, a
+    compound), tested at its middle and at 1e-3 of its length from each end: an edge
+    the fillet only shortens keeps one end's neighbourhood, or its middle if shortened
+    at both, as an edge of the result. Failing those, by the result's edges
+    themselves: two fillets shortening an edge from its two ends may leave a piece off
+    its middle (a chamfer's end edge, 1.1 long, between fillets of the box's top edge
+    and of the chamfer's lower edge at R = 0.577 kept 0.05 of it, three quarters
+    along). A face of the result may hold a consumed edge's end inside it, where a
+    fillet uncovers the face's corner (_parts)."""
+    if any(kept.distToShape(Part.Vertex(p))[0] <= tol
+           for p in _edge_points(edge, (0.5, 1e-3, 1.0 - 1e-3))):
+        return False
+    a = edge.BoundBox
+    return not any(not r.Degenerated and _boxes_meet(a, r.BoundBox, tol) and all(
+        edge.distToShape(Part.Vertex(p))[0] <= tol for p in _edge_points(r))
+        for r in kept.Edges)
+
+
+def _boxes_meet(a, b, tol):
+    """Whether bounding boxes a and b overlap or lie within tol of each other (False
+    where either is void, as an edge's box can be: BoundBox.intersect raises there)."""
+    return all(lo_a - tol <= hi_b and lo_b - tol <= hi_a for lo_a, hi_a, lo_b, hi_b in (
+        (a.XMin, a.XMax, b.XMin, b.XMax), (a.YMin, a.YMax, b.YMin, b.YMax),
+        (a.ZMin, a.ZMax, b.ZMin, b.ZMax)))
 
 
 def _cut_face(face, tools, sharp, legs, tol):
@@ -874,8 +895,62 @@ def _rebased(face):
     holes = [w for w in face.Wires if not w.isSame(face.OuterWire)]
     if holes:
         out.cutHoles(holes)
-    out.validate()  # the edges' curves on the new surface
+    _validate(out)  # the edges' curves on the new surface
     return out
+
+
+def _rewired(wire, drop, new):
+    """wire with its edges `drop`, one run of consecutive edges, replaced by the edges
+    `new`, which join the two ends of the rest, or None when that makes no closed wire.
+    The rest keep their order in the wire: a seam, which a wire on a periodic face runs
+    along twice, is listed once by wire.Edges, and a wire sorted again from those lost
+    it (a through hole's face grown at the corner where a pocket's floor meets it).
+    OCCT's wire maker may still keep the seam once, depending on the edge the list
+    starts with, so the cyclic order is tried from each start, with the new edges
+    either way round."""
+    ordered = wire.OrderedEdges
+    gone = [any(e.isSame(x) for x in drop) for e in ordered]
+    starts = [i for i in range(len(ordered)) if gone[i] and not gone[i - 1]]
+    chain = Part.__sortEdges__(new)
+    if all(gone):
+        loops = [chain]
+    elif len(starts) == 1:
+        k = starts[0]
+        kept = [e for e, g in zip(ordered[k:] + ordered[:k], gone[k:] + gone[:k]) if not g]
+        loops = [kept + chain, kept + chain[::-1]]
+    else:
+        loops = []
+    for loop in loops:
+        for j in range(len(loop)):
+            edges = loop[j:] + loop[:j]
+            try:
+                out = Part.Wire(edges)
+            except Part.OCCError:
+                continue
+            if out.isClosed() and len(out.OrderedEdges) == len(edges):
+                return out
+    return None
+
+
+def _validate(face):
+    """face.validate(), in place: where the face is not valid, it is rebuilt with its
+    edges' missing curves on its surface added. FreeCAD 0.20 rebuilds it from its outer
+    wire, then adds the other wires to that without checking that the rebuild
+    succeeded: where it failed (an open wire) on a face with holes, FreeCAD itself
+    crashed (a segmentation fault in TopoDS_Builder::Add; a through hole's face, which
+    a side hole crosses, grown where a pocket's floor edge ends on it). So each wire of
+    such a face is first rebuilt alone, where a failure only raises. Raises ValueError
+    when a wire bounds no face on the surface."""
+    wires = face.Wires
+    if len(wires) > 1 and not face.isValid():
+        for k, w in enumerate(wires):
+            alone = face.removeShape([x for x in wires if not x.isSame(w)])
+            try:
+                alone.validate()
+            except Part.OCCError:
+                raise ValueError("its %s wire (of %d) bounds no face on its surface"
+                                 % (_ordinal(k + 1), len(wires))) from None
+    face.validate()
 
 
 def _snapped_to_seams(tools, face, tol):
@@ -1097,9 +1172,12 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                                      % tuple(corner))
                 pieces[k] = _grown(pieces[k], section, whole, corner, region, tol)
         except Exception as ex:
-            raise Unassembled(t.owners, "face %s of the original solid cannot be cut along "
-                              "its blend (%s)" % (ck.element_name(shape, t.orig, "Face"),
-                                                  occt_message(ex))) from None
+            pieces = _occt_pieces(result, t, drop + kept_fillets, tol)
+            if pieces is None:
+                raise Unassembled(t.owners, "face %s of the original solid cannot be cut "
+                                  "along its blend (%s)"
+                                  % (ck.element_name(shape, t.orig, "Face"),
+                                     occt_message(ex))) from None
         faces_out += pieces
     for f in result.Faces:
         if any(f.isSame(d) for d in drop):
@@ -1200,6 +1278,28 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                     "rebuild it first" % orig)
         raise C2BlendError(msg, where, "validity")
     return solid, line
+
+
+def _occt_pieces(result, touched, skip, tol):
+    """The faces of `result` (OCCT's fillet) that lie on touched.orig, a face the blends
+    touch, none of `skip` (the rolling-ball faces replaced, and OCCT's fillets kept):
+    they take that face's place when it cannot be cut, if every edge bounding it anew
+    (touched.tools) lies on their edges. A blend's trimline is the exact contact, which
+    OCCT's fillet has too on planes, cylinders and cones, so a face that only blends'
+    sides touch is OCCT's own where its cut fails: the box's top face, cut along one
+    edge's blend and the fillets kept where a pocket's convex rim and concave corner
+    meet (OCCT's face between them, a mixed-convexity vertex), had no piece keeping the
+    pocket's corner. Where a blend ends on the face, its end section is not OCCT's:
+    None."""
+    faces = [f for f in result.Faces if not any(f.isSame(x) for x in skip)
+             and _on_face(touched.orig, _probe(f), tol)]
+    if not faces:
+        return None
+    edges = Part.Compound([e for f in faces for e in f.Edges])
+    if all(edges.distToShape(Part.Vertex(p))[0] <= tol for e in touched.tools
+           for p in _edge_points(e, (0.0, 0.25, 0.5, 0.75, 1.0))):
+        return faces
+    return None
 
 
 def _rejected_faces(solid, blended, fills):
@@ -1614,6 +1714,21 @@ def _rolling_ball(shape, edges, radius):
     return result, None
 
 
+def _occt_crash(shape, edges, radius):
+    """Why OCCT's rolling-ball fillet of `edges` at `radius` cannot be made here, when it
+    crashes the process that makes it, else None: it is tried first in another
+    (bc.trial_fillet), which gets the shape exactly. On a block's hole rim half under a
+    boss (R = 0.001, 0.01) OCCT's fillet builder crashed (a segmentation fault), which
+    closes FreeCAD."""
+    ok, why = bc.trial_fillet(shape, edges, radius)
+    if ok or why != bc.CRASHED:
+        return None
+    return ("OCCT's rolling-ball fillet of radius %g crashes on these edges (it was tried "
+            "in another process, which it closed): FreeCAD's own Fillet may close FreeCAD "
+            "here. A fillet of the edges one by one, or at another radius, may avoid it"
+            % radius)
+
+
 def _invalid_input(shape, msg):
     """The message for OCCT's fillet failing (msg) on a solid that fails isValid(): no
     radius is to blame, the solid is (as one whose faces are not oriented alike, which
@@ -1633,11 +1748,12 @@ def _rolling_ball_failure(shape, names, radius, msg, label):
     halving from radius down to radius / 1024, else doubling up to the shape's diagonal
     (a radius near OCCT's tolerance fails too), then 6 bisections (about 1 % from the
     limit); or the statement that no radius works, with the edges it fails on together
-    (_failing_set)."""
+    (_failing_set). These fillets are tried in another process (bc.trial_fillet),
+    where OCCT may crash."""
     edges = [e for _, e in names]
 
     def works(r):
-        return _rolling_ball(shape, edges, r)[0] is not None
+        return bc.trial_fillet(shape, edges, r)[0]
 
     head = "OCCT's rolling-ball fillet of radius %g failed (%s)" % (radius, msg)
     diag = shape.BoundBox.DiagonalLength
@@ -1675,7 +1791,7 @@ def _failing_set(shape, names, radius, label):
     rest = list(names)
     for item in names:
         fewer = [x for x in rest if x is not item]
-        if fewer and _rolling_ball(shape, [e for _, e in fewer], radius)[0] is None:
+        if fewer and not bc.trial_fillet(shape, [e for _, e in fewer], radius)[0]:
             rest = fewer
     listed = ["%s.%s" % (label, n) for n, _ in rest]
     if len(rest) == 1:
@@ -1706,7 +1822,7 @@ def _with_others(shape, edges, vertices, radius, phrase):
             if not e.Degenerated and len(ck.edge_faces(shape, e)) == 2 and \
                     not any(e.isSame(x) for x in edges + others):
                 others.append(e)
-    if not others or _rolling_ball(shape, edges + others, radius)[0] is None:
+    if not others or not bc.trial_fillet(shape, edges + others, radius)[0]:
         return ""
     return phrase % " and ".join(
         "the edge from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)"
@@ -1769,6 +1885,9 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
     names = [(n, shape.getElement(o)) for (n, _), o in zip(names, own)]
     where_all = ", ".join("%s.%s" % (label, n) for n, _ in names)
     selected = [e for _, e in names]
+    crash = _occt_crash(shape, selected, radius)
+    if crash:
+        raise C2BlendError(crash, where_all, "radius")
     result, msg = _rolling_ball(shape, selected, radius)
     if result is None and not shape.isValid():
         raise C2BlendError(_invalid_input(shape, msg), label)
