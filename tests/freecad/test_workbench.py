@@ -3291,7 +3291,8 @@ def test_a_pocket_floor_edge_running_into_a_through_hole_is_g2(monkeypatch):
     the edge (5.76 long)."""
     s, name = shapes.pocket_into_hole()
     length = s.getElement(name).Length
-    assert abs(length - (27.0 - 22.0 + 3.0 - math.sqrt(5.0))) < 1e-9
+    # from x = 22 to the hole (centre x = 30, r = 3) at 2 from its centre line y = 22
+    assert abs(length - (30.0 - math.sqrt(3.0 ** 2 - 2.0 ** 2) - 22.0)) < 1e-9
     for r in (0.5, 1.0, 1.5):
         solid, rep = C2Blend.fillet_report(s, [name], r, label="Block")
         assert_valid(solid)

@@ -1285,12 +1285,13 @@ def _occt_pieces(result, touched, skip, tol):
     touch, none of `skip` (the rolling-ball faces replaced, and OCCT's fillets kept):
     they take that face's place when it cannot be cut, if every edge bounding it anew
     (touched.tools) lies on their edges. A blend's trimline is the exact contact, which
-    OCCT's fillet has too on planes, cylinders and cones, so a face that only blends'
-    sides touch is OCCT's own where its cut fails: the box's top face, cut along one
-    edge's blend and the fillets kept where a pocket's convex rim and concave corner
-    meet (OCCT's face between them, a mixed-convexity vertex), had no piece keeping the
-    pocket's corner. Where a blend ends on the face, its end section is not OCCT's:
-    None."""
+    OCCT's fillet has too where its face is a cylinder or a torus (between planes, or a
+    plane and a coaxial cylinder or cone), so there a face that only blends' sides
+    touch is OCCT's own where its cut fails; elsewhere the edges' test refuses it. The
+    case: a block's top face, cut along one edge's blend and the fillets kept where a
+    pocket's convex rim and concave corner meet (OCCT's face between them, a
+    mixed-convexity vertex), had no piece keeping the pocket's corner. Where a blend
+    ends on the face, its end section is not OCCT's: None."""
     faces = [f for f in result.Faces if not any(f.isSame(x) for x in skip)
              and _on_face(touched.orig, _probe(f), tol)]
     if not faces:
