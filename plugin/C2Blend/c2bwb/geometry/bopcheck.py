@@ -211,7 +211,7 @@ def trial_fillet(shape, edges, radius):
     search for the radii OCCT accepts, on a block with a hole, a chamfer and a boss
     (at the radius the user gave, OCCT had only failed), would have closed FreeCAD.
     The server gets the shape exactly (_Server.fillet), once for successive trials on
-    it. Where no server can start, the fillet is tried in this process."""
+    it. None where no server can start: the caller then fillets in its own process."""
     indices = [next(i for i, x in enumerate(shape.Edges) if x.isSame(e)) for e in edges]
     try:
         server = _server("trial")
@@ -223,14 +223,7 @@ def trial_fillet(shape, edges, radius):
     except (OSError, ValueError):  # no server, or it ended: crashed, or could not start
         crashed = "trial" in _servers
         _stop("trial")
-        if crashed:
-            return False, CRASHED
-        try:
-            result = shape.makeFillet(radius, edges)
-        except Exception as ex:  # noqa: BLE001 - OCCT's, in several classes
-            return False, str(ex) or type(ex).__name__
-        found = None if not result.isNull() and result.isValid() else \
-            "the result is not a valid solid"
+        return (False, CRASHED) if crashed else None
     return found is None, found
 
 

@@ -1715,14 +1715,24 @@ def _rolling_ball(shape, edges, radius):
     return result, None
 
 
+def _works(shape, edges, radius):
+    """Whether OCCT's rolling-ball fillet of `edges` at `radius` gives a valid solid,
+    tried in another process (bc.trial_fillet), where OCCT may crash; in this one
+    where no such process can start."""
+    tried = bc.trial_fillet(shape, edges, radius)
+    if tried is None:
+        return _rolling_ball(shape, edges, radius)[0] is not None
+    return tried[0]
+
+
 def _occt_crash(shape, edges, radius):
     """Why OCCT's rolling-ball fillet of `edges` at `radius` cannot be made here, when it
     crashes the process that makes it, else None: it is tried first in another
     (bc.trial_fillet), which gets the shape exactly. On a block's hole rim half under a
     boss (R = 0.001, 0.01) OCCT's fillet builder crashed (a segmentation fault), which
     closes FreeCAD."""
-    ok, why = bc.trial_fillet(shape, edges, radius)
-    if ok or why != bc.CRASHED:
+    tried = bc.trial_fillet(shape, edges, radius)
+    if tried is None or tried[1] != bc.CRASHED:
         return None
     return ("OCCT's rolling-ball fillet of radius %g crashes on these edges (it was tried "
             "in another process, which it closed): FreeCAD's own Fillet may close FreeCAD "
@@ -1749,12 +1759,12 @@ def _rolling_ball_failure(shape, names, radius, msg, label):
     halving from radius down to radius / 1024, else doubling up to the shape's diagonal
     (a radius near OCCT's tolerance fails too), then 6 bisections (about 1 % from the
     limit); or the statement that no radius works, with the edges it fails on together
-    (_failing_set). These fillets are tried in another process (bc.trial_fillet),
-    where OCCT may crash."""
+    (_failing_set). These fillets are tried in another process (_works), where OCCT
+    may crash."""
     edges = [e for _, e in names]
 
     def works(r):
-        return bc.trial_fillet(shape, edges, r)[0]
+        return _works(shape, edges, r)
 
     head = "OCCT's rolling-ball fillet of radius %g failed (%s)" % (radius, msg)
     diag = shape.BoundBox.DiagonalLength
@@ -1792,7 +1802,7 @@ def _failing_set(shape, names, radius, label):
     rest = list(names)
     for item in names:
         fewer = [x for x in rest if x is not item]
-        if fewer and not bc.trial_fillet(shape, [e for _, e in fewer], radius)[0]:
+        if fewer and not _works(shape, [e for _, e in fewer], radius):
             rest = fewer
     listed = ["%s.%s" % (label, n) for n, _ in rest]
     if len(rest) == 1:
@@ -1823,7 +1833,7 @@ def _with_others(shape, edges, vertices, radius, phrase):
             if not e.Degenerated and len(ck.edge_faces(shape, e)) == 2 and \
                     not any(e.isSame(x) for x in edges + others):
                 others.append(e)
-    if not others or not bc.trial_fillet(shape, edges + others, radius)[0]:
+    if not others or not _works(shape, edges + others, radius):
         return ""
     return phrase % " and ".join(
         "the edge from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)"
