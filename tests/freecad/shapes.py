@@ -85,8 +85,7 @@ def offset_loft():
     lo = loft()[0]
     s = lo.makeOffsetShape(0.5, 1e-6, join=2)
     side = next(f for f in lo.Faces if isinstance(f.Surface, Part.BSplineSurface))
-    return s, side, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                         if e.BoundBox.ZMax < -0.5 + 1e-6)
+    return s, side, _edge_named(s, lambda e: e.BoundBox.ZMax < -0.5 + 1e-6)
 
 
 def stepped_shaft():
@@ -403,6 +402,11 @@ def every_edge(s):
             and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face))]
 
 
+def _edge_named(s, pred):
+    """The name ("EdgeN") of the first edge e of s for which pred(e) holds."""
+    return next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e))
+
+
 def _edges_at(s, z):
     """Names of the edges of s lying in the plane z (no vertical extent)."""
     return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
@@ -495,27 +499,24 @@ def pocket_into_hole():
     Returns (solid, name of that floor edge)."""
     s = Part.makeBox(40, 35, 9).cut(Part.makeCylinder(3, 11, V(30, 22, -1)))
     s = s.cut(Part.makeBox(9, 8, 5, V(22, 16, 5))).removeSplitter()
-    name = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                if isinstance(e.Curve, Part.Line) and e.BoundBox.ZLength < 1e-9
-                and e.BoundBox.XLength > 1 and abs(e.BoundBox.ZMin - 5) < 1e-9
-                and abs(e.BoundBox.YMin - 24) < 1e-9)
-    return s, name
+    return s, _edge_named(s, lambda e: isinstance(e.Curve, Part.Line)
+                          and e.BoundBox.ZLength < 1e-9 and e.BoundBox.XLength > 1
+                          and abs(e.BoundBox.ZMin - 5) < 1e-9
+                          and abs(e.BoundBox.YMin - 24) < 1e-9)
 
 
 def chamfered_box(c=0.78):
     """A 30 x 34 x 14 box whose top edge at y = 34 is chamfered by c. Returns (solid,
     name of the top edge at x = 0, name of the chamfer's lower edge, on the face
-    y = 34, name of the chamfer's end edge at x = 0)."""
+    y = 34)."""
     b = Part.makeBox(30, 34, 14)
     s = b.makeChamfer(c, [e for e in b.Edges if e.BoundBox.ZMin > 13.9
                           and e.BoundBox.YMin > 33.9])
-
-    def find(pred):
-        return next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e.BoundBox))
-    return (s, find(lambda b: b.XMax < 1e-9 and b.ZMin > 13.9 and b.YLength > 10),
-            find(lambda b: abs(b.ZMax - 14 + c) < 1e-9 and b.ZLength < 1e-9
-                 and b.XLength > 10 and b.YMin > 33.9),
-            find(lambda b: b.XMax < 1e-9 and abs(b.ZLength - c) < 1e-9))
+    return (s, _edge_named(s, lambda e: e.BoundBox.XMax < 1e-9 and e.BoundBox.ZMin > 13.9
+                           and e.BoundBox.YLength > 10),
+            _edge_named(s, lambda e: abs(e.BoundBox.ZMax - 14 + c) < 1e-9
+                        and e.BoundBox.ZLength < 1e-9 and e.BoundBox.XLength > 10
+                        and e.BoundBox.YMin > 33.9))
 
 
 def pocket_block():
@@ -523,26 +524,25 @@ def pocket_block():
     Returns (solid, name of the block's top edge at y = 0, name of the pocket's rim edge
     at y = 17, name of the pocket's corner edge at (23, 17))."""
     s = Part.makeBox(40, 20, 7).cut(Part.makeBox(8, 7, 6, V(15, 10, 2))).removeSplitter()
-
-    def find(pred):
-        return next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e.BoundBox))
-    return (s, find(lambda b: b.YMax < 1e-9 and b.ZMin > 7 - 1e-9 and b.XLength > 39),
-            find(lambda b: abs(b.YMin - 17) < 1e-9 and b.ZMin > 7 - 1e-9 and b.XLength > 7),
-            find(lambda b: abs(b.XMin - 23) < 1e-9 and abs(b.YMin - 17) < 1e-9
-                 and b.ZLength > 4))
+    return (s, _edge_named(s, lambda e: e.BoundBox.YMax < 1e-9
+                           and e.BoundBox.ZMin > 7 - 1e-9 and e.BoundBox.XLength > 39),
+            _edge_named(s, lambda e: abs(e.BoundBox.YMin - 17) < 1e-9
+                        and e.BoundBox.ZMin > 7 - 1e-9 and e.BoundBox.XLength > 7),
+            _edge_named(s, lambda e: abs(e.BoundBox.XMin - 23) < 1e-9
+                        and abs(e.BoundBox.YMin - 17) < 1e-9 and e.BoundBox.ZLength > 4))
 
 
 def boss_over_hole():
     """A 25 x 24 x 10 block with a through hole r = 1.8 at (9, 9) and a boss r = 2, 5
     high, at (11, 7) on its top, over part of the hole. Returns (solid, name of the
     hole's rim arc, 2.807 long, between the top face and the hole), on which OCCT's
-    fillet crashes (a segmentation fault) at R = 0.01 and 0.1 and fails at 0.001."""
+    fillet crashes (a segmentation fault) at R = 0.001 to 0.5 and fails at 3e-4."""
     s = Part.makeBox(25, 24, 10).cut(Part.makeCylinder(1.8, 12, V(9, 9, -1)))
     s = s.fuse(Part.makeCylinder(2, 5, V(11, 7, 10))).removeSplitter()
-    name = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                if isinstance(e.Curve, Part.Circle) and abs(e.Curve.Radius - 1.8) < 1e-9
-                and abs(e.BoundBox.ZMin - 10) < 1e-9 and abs(e.Length - 2.807) < 1e-3)
-    return s, name
+    return s, _edge_named(s, lambda e: isinstance(e.Curve, Part.Circle)
+                          and abs(e.Curve.Radius - 1.8) < 1e-9
+                          and abs(e.BoundBox.ZMin - 10) < 1e-9
+                          and abs(e.Length - 2.807) < 1e-3)
 
 
 def as_nurbs(s, names):
@@ -589,8 +589,8 @@ def elliptic_boss():
     plate = Part.makeBox(50, 40, 5, V(-25, -20, -5))
     boss = Part.Face(Part.Wire(Part.Ellipse(V(0, 0, 0), 12, 6).toShape())).extrude(V(0, 0, 10))
     s = plate.fuse(boss).removeSplitter()
-    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                   if abs(e.BoundBox.ZMin - 10) < 1e-6 and abs(e.BoundBox.ZMax - 10) < 1e-6)
+    return s, _edge_named(s, lambda e: abs(e.BoundBox.ZMin - 10) < 1e-6
+                          and abs(e.BoundBox.ZMax - 10) < 1e-6)
 
 
 def freeform_boss():
@@ -604,8 +604,8 @@ def freeform_boss():
     c.interpolate(pts, PeriodicFlag=True)
     boss = Part.Face(Part.Wire(c.toShape())).extrude(V(0, 0, 8))
     s = Part.makeBox(50, 40, 5, V(-25, -20, -5)).fuse(boss).removeSplitter()
-    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                   if isinstance(e.Curve, Part.BSplineCurve) and abs(e.BoundBox.ZMin - 8) < 1e-6)
+    return s, _edge_named(s, lambda e: isinstance(e.Curve, Part.BSplineCurve)
+                          and abs(e.BoundBox.ZMin - 8) < 1e-6)
 
 
 def periodic_loft(n=24):
@@ -622,9 +622,8 @@ def periodic_loft(n=24):
                          z) for k in range(n)], PeriodicFlag=True)
         ws.append(Part.Wire(c.toShape()))
     s = Part.makeBox(40, 40, 5, V(-20, -20, 0)).fuse(Part.makeLoft(ws, True)).removeSplitter()
-    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                   if abs(e.BoundBox.ZMin - 5) < 1e-6 and abs(e.BoundBox.ZMax - 5) < 1e-6
-                   and abs(e.BoundBox.XMax) < 7)
+    return s, _edge_named(s, lambda e: abs(e.BoundBox.ZMin - 5) < 1e-6
+                          and abs(e.BoundBox.ZMax - 5) < 1e-6 and abs(e.BoundBox.XMax) < 7)
 
 
 def equal_tee():
@@ -651,8 +650,8 @@ def crossing_bores():
              if len({f.hashCode() for f in s.ancestorsOfType(e, Part.Face)}) == 2
              and all(isinstance(f.Surface, Part.Cylinder)
                      for f in s.ancestorsOfType(e, Part.Face))]
-    rim = next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-               if isinstance(e.Curve, Part.Circle) and e.BoundBox.XMax < 1e-9)
+    rim = _edge_named(s, lambda e: isinstance(e.Curve, Part.Circle)
+                      and e.BoundBox.XMax < 1e-9)
     assert len(bores) == 6, bores
     return s, bores, rim
 
@@ -693,9 +692,8 @@ def nurbs_sphere_through_plate(turn):
     sphere = Part.Solid(Part.Shell(Part.makeSphere(5, V(0, 0, 7)).Faces[0].toNurbs().Faces))
     sphere.rotate(V(0, 0, 7), V(0, 0, 1), turn)
     s = Part.makeBox(40, 40, 5, V(-20, -20, 0)).fuse(sphere).removeSplitter()
-    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                   if abs(e.BoundBox.ZMin - 5) < 1e-6 and abs(e.BoundBox.ZMax - 5) < 1e-6
-                   and 5 < e.BoundBox.XLength < 12)
+    return s, _edge_named(s, lambda e: abs(e.BoundBox.ZMin - 5) < 1e-6
+                          and abs(e.BoundBox.ZMax - 5) < 1e-6 and 5 < e.BoundBox.XLength < 12)
 
 
 def nurbs_sphere_on_its_side(axis="y"):
@@ -725,9 +723,8 @@ def ellipsoid_on_plate():
     finally:
         FreeCAD.closeDocument(doc.Name)
     s = ell.fuse(Part.makeBox(30, 30, 3, V(-15, -15, -3))).removeSplitter()
-    return s, next("Edge%d" % (i + 1) for i, x in enumerate(s.Edges)
-                   if abs(x.BoundBox.ZMin) < 1e-6 and abs(x.BoundBox.ZMax) < 1e-6
-                   and abs(x.BoundBox.XLength - 12) < 1)
+    return s, _edge_named(s, lambda x: abs(x.BoundBox.ZMin) < 1e-6
+                          and abs(x.BoundBox.ZMax) < 1e-6 and abs(x.BoundBox.XLength - 12) < 1)
 
 
 def crossing_lofts():
@@ -760,9 +757,8 @@ def wavy_top_block():
     top = Part.BSplineSurface()
     top.interpolate(pts)
     s = Part.makeBox(40, 30, 20).cut(top.toShape().extrude(V(0, 0, 20))).removeSplitter()
-    return s, next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
-                   if abs(e.BoundBox.YMax) < 1e-6 and e.BoundBox.ZMin > 10
-                   and e.BoundBox.XLength > 30)
+    return s, _edge_named(s, lambda e: abs(e.BoundBox.YMax) < 1e-6 and e.BoundBox.ZMin > 10
+                          and e.BoundBox.XLength > 30)
 
 
 def circle_edge(shape, z):

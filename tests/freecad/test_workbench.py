@@ -3329,7 +3329,7 @@ def test_an_edge_two_fillets_shorten_from_both_ends_keeps_its_piece(monkeypatch)
     does). Now both blends are G2, the solid passes the BOP check, and it has the
     stretch left as an edge."""
     r, c = 0.577, 0.78
-    s, top, lower, end = shapes.chamfered_box(c)
+    s, top, lower = shapes.chamfered_box(c)
     lo, hi = 14 - c + r * math.tan(math.pi / 8) / math.sqrt(2), 14 - r
     solid, rep = C2Blend.fillet_report(s, [top, lower], r, label="Box")
     assert_valid(solid)
