@@ -8,11 +8,12 @@ every edge of some parts instead (the corners filled, the fillets kept and why);
 with --random-edges N, random sets of edges of N random blocks (corners where fillets
 meet, convex and concave). With --bop-times, the processor and clock time of OCCT's BOP
 check on a filleted pentagonal prism and on its plate fillings' neighbourhoods, which
-bopcheck's time limits allow for.
+bopcheck's time limits allow for. With --only TEXT, the handful of typical parts is cut
+down to those whose name contains TEXT (to time them).
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
-       [--validation] [--all-edges] [--random N | --random-edges N [--seed S]]
-       [--bop-times]
+       [--validation] [--only TEXT] [--all-edges]
+       [--random N | --random-edges N | --random-machined N [--seed S]] [--bop-times]
 """
 import argparse
 import math
@@ -186,11 +187,13 @@ def occt_check(shape, edges, r):
                                        max(x["g2_rel"] for x in rep["edges"]))
 
 
-def survey():
+def survey(only=""):
     print("| part | edges | R | verdict | valid | blends | kept | worst angle (rad) | worst "
           "jump (rel) | samples | data error | ms | kept because | OCCT's fillet: check |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, shape, edges, r in parts():
+        if only not in name:
+            continue
         t0 = time.perf_counter()
         try:
             solid, rep = C2Blend.fillet_report(shape, edges, r)
@@ -466,6 +469,8 @@ def bop_times():
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--validation", action="store_true", help="also time OCCT's validity checks")
+    ap.add_argument("--only", default="", metavar="TEXT",
+                    help="only the typical parts whose name contains TEXT")
     ap.add_argument("--all-edges", action="store_true",
                     help="fillet every edge of some parts instead")
     ap.add_argument("--random", type=int, metavar="N",
@@ -493,7 +498,7 @@ def main():
     if a.all_edges:
         all_edges()
         return
-    survey()
+    survey(a.only)
     if a.validation:
         validation()
 

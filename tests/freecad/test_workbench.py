@@ -16,6 +16,7 @@ import time
 
 import FreeCAD
 import Part
+import numpy as np
 import pytest
 
 import C2Blend
@@ -1684,15 +1685,17 @@ def test_a_check_held_up_by_a_busy_machine_is_not_given_up(monkeypatch):
 
 
 def test_a_real_stuck_bop_check_is_found_alongside(monkeypatch):
-    """A 20 x 20 x 10 box with every edge filleted at R = 0.5: OCCT's BOP check of the
-    solid walks without end on one corner's plate filling (measured: past 40 s, where
-    the remade solid is checked in 6 s). The neighbourhood of that filling, checked
-    alongside, is found stuck after NEAR_LIMIT (15 s) of processor time, the whole
-    check is given up without waiting for its own LIMIT (45 s), and the remade solid
-    passes it."""
+    """A 20 x 20 x 10 box with every edge filleted at R = 0.45: OCCT's BOP check of the
+    solid walks without end on one corner's plate filling. The neighbourhood of that
+    filling, checked alongside, is found stuck after NEAR_LIMIT (15 s) of processor
+    time, the whole check is given up without waiting for its own LIMIT (45 s), and the
+    remade solid passes it. Which radius makes OCCT loop depends on the blends' last
+    bits: it was R = 0.5 (past 40 s, where the remade solid was checked in 6 s) until
+    the samples moved by 1e-12 along the contact; at 0.4, 0.5, 0.55 and 0.6 the check
+    now ends."""
     given_up = unfinished_checks(monkeypatch)
     box = Part.makeBox(20, 20, 10)
-    solid, rep = C2Blend.fillet_report(box, ["Edge%d" % (i + 1) for i in range(12)], 0.5,
+    solid, rep = C2Blend.fillet_report(box, ["Edge%d" % (i + 1) for i in range(12)], 0.45,
                                        label="Box")
     assert len(given_up) == 1 and len(given_up[0].stuck) == 1
     assert "on the neighbourhood of a plate filling" in str(given_up[0])
@@ -1744,7 +1747,8 @@ def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
     """A sphere converted by toNurbs() through a plate, turned 45 degrees: the input
     fails the BOP check for C0 geometry only. Its face is cut along the blend of the
     junction (R = 1) with the trimline started where it crosses the face's seam: the
-    fillet is G2 and the BOP check finds only C0 geometry. Cut with the trimline
+    fillet is G2 and the BOP check finds C0 geometry (and, depending on the blend's last
+    bits, "SelfIntersect" as below). Cut with the trimline
     started half a period on (as before that was tried first), the sphere's face also
     gets "SelfIntersect" from the BOP check. That test is unreliable on such faces: it
     reports the same on the sphere's surface cut by the plane z = 5.5 with OCCT's own
@@ -1761,9 +1765,13 @@ def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Ball")
     assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
     assert_g2(rep)
-    assert rep["solid_check"] == (
-        "passes BRepCheck; the BOP check finds geometry that is only C0 (%s), as in the "
-        "input solid (%s): Boolean operations on those faces may fail" % (orig, orig))
+    # whether the self-interference test fires here too depends on the blend's last bits
+    # (it did after a change of the samples' placement by 1e-12)
+    assert re.fullmatch(
+        r"passes BRepCheck; the BOP check finds geometry that is only C0 \(%s\), as in the "
+        r"input solid \(%s\)(; its self-interference test also reports Error in Face: BOPAlgo "
+        r"SelfIntersect on face Face\d+, only C0 .*)?: Boolean operations on those faces may "
+        r"fail" % (re.escape(orig), re.escape(orig)), rep["solid_check"]), rep["solid_check"]
     half = fl._restarted
     monkeypatch.setattr(fl, "_restarted", lambda e, face=None, tol=0.0:
                         e if face is not None else half(e))
@@ -2836,6 +2844,73 @@ def test_sample_in_a_gap_between_guide_pieces():
         assert abs((c - p).Length - 1.5) < 1e-10
 
 
+def test_samples_are_uniform_in_the_arc_length_of_an_elliptic_spine():
+    """The elliptic boss's top edge (semi-axes a = 12, b = 6, at z = 10) at R = 2: the
+    ball's centre runs on the ellipse's inner parallel at distance R, at z = 10 - R,
+    whose speed in the ellipse's angle th is |E'| - R ab / |E'|^2 (|E'|^2 = a^2 sin^2 th
+    + b^2 cos^2 th; the second term is R times the turning of its tangent). Its arc
+    length is integrated here by composite 20-point Gauss-Legendre on 64 spans and
+    inverted by Newton's method in th. The contact's spine length and its samples at
+    equal arc lengths (the centres at j L / 48 from the first) agree with it to 1e-9.
+    The speed varies by a factor of 4.7 along the spine, so samples placed by the guide's
+    parameter, or by a poor arc length, are off by far more."""
+    from c2bwb.geometry.contact import Contact
+    from c2bwb.geometry.rollingball import RollingBallFace, chains, new_faces
+    a, b, r, z = 12.0, 6.0, 2.0, 8.0
+    s, edge = shapes.elliptic_boss()
+    res = s.makeFillet(r, [s.getElement(edge)])
+    ff = new_faces(s, res)
+    (chain,), _ = chains([RollingBallFace(res, f, ff) for f in ff])
+    con = Contact(chain, r)
+
+    def speed(th):
+        e2 = (a * np.sin(th)) ** 2 + (b * np.cos(th)) ** 2
+        return np.sqrt(e2) - r * a * b / e2
+
+    def centre(th):
+        n = np.hypot(b * math.cos(th), a * math.sin(th))
+        return V(a * math.cos(th) - r * b * math.cos(th) / n,
+                 b * math.sin(th) - r * a * math.sin(th) / n, z)
+
+    x, w = np.polynomial.legendre.leggauss(20)
+
+    def arc(th0, th1):  # composite Gauss, 64 spans per turn
+        spans = max(1, int(math.ceil(abs(th1 - th0) / (2 * math.pi) * 64)))
+        edges = np.linspace(th0, th1, spans + 1)
+        h = 0.5 * (edges[1:] - edges[:-1])
+        mid = 0.5 * (edges[1:] + edges[:-1])
+        return float(np.sum(h[:, None] * w * speed(mid[:, None] + h[:, None] * x)))
+
+    def angle_of(c):  # the ellipse angle whose parallel point is c
+        th = math.atan2(c.y / b, c.x / a)
+        for _ in range(50):
+            d = centre(th) - c
+            tangent = (centre(th + 1e-6) - centre(th - 1e-6)) * (1 / 2e-6)
+            step = d.dot(tangent) / tangent.dot(tangent)
+            th -= step
+            if abs(step) < 1e-15:
+                break
+        assert (centre(th) - c).Length < 1e-9
+        return th
+
+    total = arc(0.0, 2 * math.pi)
+    assert max(speed(np.linspace(0, 2 * math.pi, 1001))) > 4.5 * min(speed(np.linspace(0, 2 * math.pi, 1001)))
+    assert con.length == pytest.approx(total, abs=1e-9)
+    cs = [con.at_length(con.length * j / 48)[2] for j in range(48)]
+    th0 = angle_of(cs[0])
+    sense = math.copysign(1.0, (angle_of(cs[1]) - th0 + math.pi) % (2 * math.pi) - math.pi)
+    worst = 0.0
+    for j, c in enumerate(cs):
+        target, th = total * j / 48, th0 + sense * 2 * math.pi * j / 48
+        for _ in range(50):  # Newton's method on the arc length from th0
+            step = (sense * arc(th0, th) - target) / speed(th)
+            th -= sense * step
+            if abs(step) < 1e-14:
+                break
+        worst = max(worst, (c - centre(th)).Length)
+    assert worst < 1e-9, worst
+
+
 def test_arc_length_near_clustered_guide_knots():
     """The rounded pocket's rim after toNurbs(): OCCT's rolling-ball face at one corner
     is degree 14 with knots clustered at one end (spans down to 1e-3 of the arc). Arc
@@ -3796,17 +3871,20 @@ def test_verdict_does_not_depend_on_the_parts_size(k):
 
 def test_curvature_jump_is_relative_to_the_faces_curvature():
     """A fillet of radius 0.025 on a 42-long part (the revolved B-spline part's rims):
-    its trimline on the top plane has a curvature jump of 2.6e-8 (1/mm), 1.1e-6 of
-    1/diagonal but 5e-10 of the blend's own curvature (about 2/R). The jump is measured
-    against the larger of the faces' curvatures (check.curvature_scale), so a small
-    fillet meets the same relative bound as a large one: G2, by the fillet's report and
-    by the check of its edges alike."""
+    its trimlines have curvature jumps up to 1.8e-8 (1/mm; 2.6e-8 before the samples
+    moved by 1e-12 along the contact), rounding noise of the fit: 7.6e-7 of 1/diagonal,
+    but below 1e-9 of the blend's own curvature (about 2/R). The jump is
+    measured against the larger of the faces' curvatures (check.curvature_scale), so a
+    small fillet meets the same relative bound as a large one: G2, by the fillet's
+    report and by the check of its edges alike."""
     s, names = shapes.revolved_spline()
     solid, rep = C2Blend.fillet_report(s, names, 0.025, label="Rev")
     assert_valid(solid)
     diag = solid.BoundBox.DiagonalLength
     assert rep["verdict"] == "G2" and not rep["kept_occt_faces"]
-    assert max(t["g2"] for t in rep["trimlines"]) * diag > ck.TOL_G2  # 1/diag: G1
+    # against 1/diag, rounding noise alone comes within 10x of the bound
+    assert max(t["g2"] for t in rep["trimlines"]) * diag > 0.1 * ck.TOL_G2
+    assert max(t["g2_rel"] for t in rep["trimlines"]) < 1e-9
     for t in rep["trimlines"]:
         if t["g2"] > 0:  # a blend's trimline: the scale is the blend's curvature
             assert 1.0 / 0.025 < t["curvature_scale"] < 3.0 / 0.025

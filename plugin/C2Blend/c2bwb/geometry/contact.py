@@ -22,6 +22,11 @@ quadrature on the guide's knot spans (the speed |dc/da| is analytic inside each 
 
     |dc/da| = (m' . t0 - (c - m) . t0') / (t . t0),   t = unit spine tangent ~ N1 x N2.
 
+On each final subinterval of the quadrature, the speed at its ten Gauss nodes (five
+per half) is interpolated by a polynomial of degree 9, whose integral is the arc length
+inside it: a sample's guide parameter is found on that polynomial, and the contact is
+solved there once.
+
 Where the guide is only C0 (a knot of full multiplicity, or the joint between two faces
 of a chain) its plane turns and the centre jumps along the spine; the spans are joined
 by the measured jump, so the samples stay uniform on the spine itself.
@@ -41,8 +46,6 @@ MIN_SUB = 4  # ... and at least this many per section (each is halved at least o
 QUAD_REL = 1e-12  # a subinterval is halved until its halves' integrals sum to its own
 # within this fraction of the section's arc length (_refine) ...
 MAX_HALVINGS = 12  # ... at most this many times
-SIMPSON = 1e-2  # a Newton step for a given arc length this short (relative to its
-# Gauss subinterval) is integrated by Simpson's rule (at_length)
 TANGENT = math.radians(1.0)  # faces closer than this to tangent: a reason Newton fails
 WARM = 0.05  # start Newton from the last solution within this fraction of the section
 
@@ -90,10 +93,13 @@ def _extended(sections, extend):
 class _Piece:
     """A stretch of one section between knots of its guide: k (the section), nodes
     [(a, spine arc length from the piece's start)] at its Gauss subintervals' ends,
-    length, and start (arc length from the chain's start, set by Contact._join)."""
+    arcs [the arc length from the start of a final subinterval of the quadrature, a
+    numpy series in a, or None where the speed is not finite], one per interval
+    between nodes (a subinterval's serves its two halves), length, and start (arc
+    length from the chain's start, set by Contact._join)."""
 
-    def __init__(self, k, nodes):
-        self.k, self.nodes, self.length = k, nodes, nodes[-1][1]
+    def __init__(self, k, nodes, arcs):
+        self.k, self.nodes, self.arcs, self.length = k, nodes, arcs, nodes[-1][1]
         self.start, self.c_end, self.t_end = 0.0, None, None
 
 
@@ -218,9 +224,11 @@ class Contact:
                 "touching both has no single contact, and no blend runs up to the tangent "
                 "joint" % math.degrees(turn))
 
-    def _integral(self, k, a0, a1):
-        """Spine arc length from guide parameter a0 to a1 in section k (Gauss)."""
-        return (a1 - a0) * sum(w * self.solve(k, a0 + (a1 - a0) * x)[4] for x, w in _GL)
+    def _gauss(self, k, a0, a1):
+        """Spine arc length from guide parameter a0 to a1 in section k (Gauss), and
+        [(a, speed)] at the Gauss nodes."""
+        speeds = [(a, self.solve(k, a)[4]) for a in (a0 + (a1 - a0) * x for x, _ in _GL)]
+        return (a1 - a0) * sum(w * v for (_, w), (_, v) in zip(_GL, speeds)), speeds
 
     def _pieces(self, k):
         """Section k cut at the interior knots of its guide: [Piece]. OCCT's fillet
@@ -239,31 +247,46 @@ class Contact:
             spans = [(b, a) for a, b in reversed(spans)]
         subs = [[(a + (b - a) * i / per, a + (b - a) * (i + 1) / per) for i in range(per)]
                 for a, b in spans]
-        wholes = [[self._integral(k, a0, a1) for a0, a1 in row] for row in subs]
+        wholes = [[self._gauss(k, a0, a1)[0] for a0, a1 in row] for row in subs]
         tol = QUAD_REL * sum(abs(w) for row in wholes for w in row)
         out = []
         for (a, _), row, row_wholes in zip(spans, subs, wholes):
-            nodes = [(a, 0.0)]
+            nodes, arcs = [(a, 0.0)], []
             for (a0, a1), whole in zip(row, row_wholes):
-                self._refine(k, a0, a1, whole, nodes, tol, 0)
-            out.append(_Piece(k, nodes))
+                self._refine(k, a0, a1, whole, nodes, arcs, tol, 0)
+            out.append(_Piece(k, nodes, arcs))
         return out
 
-    def _refine(self, k, a0, a1, whole, nodes, tol, depth):
+    def _refine(self, k, a0, a1, whole, nodes, arcs, tol, depth):
         """Append the arc-length nodes of [a0, a1] (whole: its Gauss integral) to nodes,
-        halving it until the halves' integrals sum to whole within tol (a length).
-        Inside a knot span the speed is analytic, but OCCT's guides vary fast near
-        clustered knots (a degree-14 face whose spans shrink to 1e-3 of the fillet at
-        one end): a fixed rule misplaced a sample by 1e-7 there, and the data lost 3
-        digits."""
+        halving it until the halves' integrals sum to whole within tol (a length), and
+        the arc length inside each final subinterval to arcs (see _Piece). Inside a
+        knot span the speed is analytic, but OCCT's guides vary fast near clustered
+        knots (a degree-14 face whose spans shrink to 1e-3 of the fillet at one end): a
+        fixed rule misplaced a sample by 1e-7 there, and the data lost 3 digits."""
         m = 0.5 * (a0 + a1)
-        left, right = self._integral(k, a0, m), self._integral(k, m, a1)
+        (left, at_left), (right, at_right) = self._gauss(k, a0, m), self._gauss(k, m, a1)
         if depth >= MAX_HALVINGS or abs(left + right - whole) <= tol:
+            # degree 9 through the ten nodes: each half's Gauss rule integrates it
+            # exactly, so its integral passes through the nodes' arc lengths (the mean
+            # speed where the subinterval is a few units of rounding wide, or none,
+            # and its nodes coincide: a jump of the speed halved MAX_HALVINGS times, a
+            # section of zero length)
+            a, v = zip(*(at_left + at_right))
+            if not all(math.isfinite(q) for q in v):
+                arc = None  # where the centre stops (_at_length says so)
+            elif len(set(a)) == len(a):
+                arc = np.polynomial.Chebyshev.fit(a, v, 9, domain=sorted((a0, a1)))
+                arc = arc.integ(lbnd=a0)
+            else:
+                mean = sum(v) / len(v)
+                arc = np.polynomial.Polynomial([-mean * a0, mean])
             nodes.append((m, nodes[-1][1] + left))
             nodes.append((a1, nodes[-1][1] + right))
+            arcs += [arc, arc]
             return
-        self._refine(k, a0, m, left, nodes, tol, depth + 1)
-        self._refine(k, m, a1, right, nodes, tol, depth + 1)
+        self._refine(k, a0, m, left, nodes, arcs, tol, depth + 1)
+        self._refine(k, m, a1, right, nodes, arcs, tol, depth + 1)
 
     def _end(self, piece, at_end):
         """(c, t): the ball's centre and spine tangent at the start or end of a piece,
@@ -309,26 +332,19 @@ class Contact:
         lengths = [q[1] for q in piece.nodes]
         j = min(max(bisect.bisect_right(lengths, s) - 1, 0), len(lengths) - 2)
         (a0, l0), (a1, l1) = piece.nodes[j], piece.nodes[j + 1]
-        if not l1 > l0:  # the centre stands still from a0 to a1: a cusp of its curve
+        arc = piece.arcs[j]
+        if not l1 > l0 or arc is None:  # the centre stands still: a cusp of its curve
             c = self.solve(k, a0)[2]
             raise ContactError("the rolling ball's centre stops near (%.6g, %.6g, %.6g): the "
                                "radius is about a face's curvature radius there, where its "
                                "offset has a cusp; a smaller radius avoids it"
                                % (c.x, c.y, c.z))
+        base = l0 - arc(a0)  # arc length where this final subinterval starts
+        speed = arc.deriv()
         a = a0 + (a1 - a0) * (s - l0) / (l1 - l0)
-        known, length, v_known = a0, l0, None  # a parameter whose arc length is known
-        for _ in range(MAX_NEWTON):
-            v = self.solve(k, a)[4]
-            if v_known is not None and abs(a - known) <= SIMPSON * abs(a1 - a0):
-                # Simpson's rule: off by |a - known|^5 / 2880 times the speed's 4th
-                # derivative, at most 1e-10 of that term over the whole subinterval
-                mid = self.solve(k, 0.5 * (known + a))[4]
-                length += (a - known) * (v_known + 4.0 * mid + v) / 6.0
-            else:
-                length += self._integral(k, known, a)
-            known, v_known = a, v
-            step = (length - s) / v
-            a -= step
+        for _ in range(MAX_NEWTON):  # on the polynomial: no contact solved
+            step = (base + arc(a) - s) / speed(a)
+            a = min(max(a - step, min(a0, a1)), max(a0, a1))
             if abs(step) <= NEWTON_DONE * (1.0 + abs(a)):
                 break
         p1, p2, c, t, _, x = self.solve(k, a)
