@@ -9,11 +9,13 @@ with --random-edges N, random sets of edges of N random blocks (corners where fi
 meet, convex and concave). With --bop-times, the processor and clock time of OCCT's BOP
 check on a filleted pentagonal prism and on its plate fillings' neighbourhoods, which
 bopcheck's time limits allow for. With --only TEXT, the handful of typical parts is cut
-down to those whose name contains TEXT (to time them).
+down to those whose name contains TEXT (to time them). With --turned, each random part
+is turned and moved to a random placement first.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]
-       [--random N | --random-edges N | --random-machined N [--seed S]] [--bop-times]
+       [--random N | --random-edges N | --random-machined N [--seed S] [--turned]]
+       [--bop-times]
 """
 import argparse
 import math
@@ -374,6 +376,19 @@ def random_machined(rng):
     return " + ".join(kinds) or "block", s, sorted(chosen, key=lambda e: int(e[4:])), r
 
 
+def turned(make):
+    """make, its part then turned about a random axis by a random angle and moved up to
+    1000 away (its Placement), as a part placed in an assembly is."""
+    def made(rng):
+        kind, s, edges, r = make(rng)
+        axis = V(rng.gauss(0, 1), rng.gauss(0, 1), rng.gauss(0, 1))
+        s = s.copy()
+        s.Placement = FreeCAD.Placement(V(*(rng.uniform(-1000, 1000) for _ in range(3))),
+                                        FreeCAD.Rotation(axis, rng.uniform(0, 360)))
+        return kind + " (turned)", s, edges, r
+    return made
+
+
 def random_survey(count, seed, make=random_part):
     """Fillet `count` random parts (make(rng), seeded): lists those where a trimline is
     not G2, a fillet is kept as OCCT's, the solid is not valid or does not pass the
@@ -480,17 +495,20 @@ def main():
     ap.add_argument("--random-machined", type=int, metavar="N",
                     help="instead, fillet random sets of edges of N random machined blocks")
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
+    ap.add_argument("--turned", action="store_true",
+                    help="each random part turned and moved to a random placement")
     ap.add_argument("--bop-times", action="store_true",
                     help="instead, time OCCT's BOP check on a filleted pentagonal prism")
     a = ap.parse_args()
+    place = turned if a.turned else (lambda make: make)
     if a.random:
-        random_survey(a.random, a.seed)
+        random_survey(a.random, a.seed, place(random_part))
         return
     if a.random_edges:
-        random_survey(a.random_edges, a.seed, random_block)
+        random_survey(a.random_edges, a.seed, place(random_block))
         return
     if a.random_machined:
-        random_survey(a.random_machined, a.seed, random_machined)
+        random_survey(a.random_machined, a.seed, place(random_machined))
         return
     if a.bop_times:
         bop_times()

@@ -586,6 +586,39 @@ def test_concave_edge_ending_on_a_cylinder():
     assert len([f for f in solid.Faces if isinstance(f.Surface, Part.Cylinder)]) == 1
 
 
+@pytest.mark.parametrize("far", [1e3, 1e5])
+def test_an_end_cut_far_from_the_origin(far):
+    """The concave edge running into a cylinder (above), and the slanted L bracket's
+    inner edge (its end plane tilted 20 degrees), placed at (far, -0.7 far, 0.4 far) as
+    a part in an assembly may be. Newton's method for the curve cutting the blend back
+    at its end stopped only on a residual below 1e-14 of the blend's size (or a step
+    below 1e-14 of the parameters): at 1e3 from the origin the points' own rounding is
+    1e-13, so it never did, and the fillet was kept as OCCT's ("Newton's method for
+    the cut curve did not converge"; the wall at 1e3 and 1e5, the bracket at 1e5, and
+    at 1e3 a third of 40 random machined blocks turned and placed so). The residual
+    now also counts as converged within 64 units of rounding of the coordinates. Both
+    fillets are G2, and the volume added to the wall is the closed form's, as at the
+    origin."""
+    place = FreeCAD.Placement(V(far, -0.7 * far, 0.4 * far), FreeCAD.Rotation())
+    s, edge = shapes.wall_into_cylinder()
+    t = s.copy()
+    t.Placement = place
+    solid, rep = C2Blend.fillet_report(t, [edge], 2.0, label="Wall")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+    added = _quintic_integral(lambda a: 30.0 * a - 0.5 * (a * math.sqrt(36.0 - a * a)
+                                                          + 36.0 * math.asin(a / 6.0)), 2.0)
+    assert abs(solid.Volume - (s.Volume + added)) < 1e-6
+    s, inner = shapes.slanted_l_bracket("z")
+    s = s.copy()
+    s.Placement = place
+    solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
+
+
 def test_end_face_that_cannot_grow_keeps_occt_face(monkeypatch):
     """Fault injection: no growth region can be built for the L bracket's inner edge's
     end faces. OCCT's face is kept with the reason, the solid (OCCT's, with its own

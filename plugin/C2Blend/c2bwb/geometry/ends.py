@@ -38,6 +38,7 @@ CUT_NODES = 128  # intervals in u of a cut curve's interpolation
 CUT_TOL = 1e-8  # a cut curve lies on both surfaces within this, relative to the blend
 MAX_NEWTON = 30
 NEWTON_DONE = 1e-14  # relative residual or step at which a cut point is converged
+ROUNDING = 64 * 2.0 ** -52  # ... or the residual within this of the coordinates' size
 # OCCT's end edge at a corner patch is a ball's section unless it leaves the plane
 # across the guide at the end by more than SLANT times its length (the gusset's sloped
 # edges at R = 1: 0.75; sections: 1e-7)
@@ -173,15 +174,17 @@ def _slant_tool(edge, face, radius):
 
 
 def _newton(f, x, scale, what):
-    """Newton (least squares when overdetermined) on f(x) -> (residual Vector, [column
-    Vectors]) from x, until the residual is rounding (NEWTON_DONE x scale) or the step
-    is (near a tangency the Jacobian is nearly singular, so the parameters jitter by
-    more than the residual). Returns x. Raises ValueError naming `what`, also when the
-    iterates run off to where the surfaces give no finite values (far outside their
-    domains): numpy's least squares would fail there with a SystemError."""
+    """Newton (least squares when overdetermined) on f(x) -> (point, its residual
+    Vector, [column Vectors]) from x, until the residual is rounding (NEWTON_DONE x
+    scale, or ROUNDING x the point's largest coordinate, for a part placed far from the
+    origin) or the step is (near a tangency the Jacobian is nearly singular, so the
+    parameters jitter by more than the residual). Returns x. Raises ValueError naming
+    `what`, also when the iterates run off to where the surfaces give no finite values
+    (far outside their domains): numpy's least squares would fail there with a
+    SystemError."""
     for _ in range(MAX_NEWTON):
-        d, cols = f(x)
-        if d.Length <= NEWTON_DONE * scale:
+        p, d, cols = f(x)
+        if d.Length <= max(NEWTON_DONE * scale, ROUNDING * max(abs(p.x), abs(p.y), abs(p.z))):
             return x
         jac = np.array([[c.x for c in cols], [c.y for c in cols], [c.z for c in cols]])
         if not (np.isfinite(jac).all() and math.isfinite(d.Length)):
@@ -191,6 +194,12 @@ def _newton(f, x, scale, what):
         if max(abs(q) for q in dx) <= NEWTON_DONE * (1.0 + max(abs(q) for q in x)):
             return x
     raise ValueError("Newton's method for %s did not converge" % what)
+
+
+def _gap(p, q, *cols):
+    """(p, p - q, cols): a point on one surface, its residual from one on the other, and
+    the residual's derivatives, as _newton takes them."""
+    return p, p - q, cols
 
 
 def cut_edge(surface, scale, tool_face, near, touch=None):
@@ -233,9 +242,9 @@ def cut_across_junction(a, va, b, vb, scale, tool_face, near, touch=None):
     if not sol or not beyond(sol[-1][1]) or len(sol) < 2:
         raise ValueError("the cut curve does not cross into the next run")
     u0, _, s0, t0 = sol[-2]
-    uj, sj, tj = _newton(lambda y: (a.value(y[0], va) - tool.value(y[1], y[2]),
-                                    (a.getDN(y[0], va, 1, 0), -tool.getDN(y[1], y[2], 1, 0),
-                                     -tool.getDN(y[1], y[2], 0, 1))),
+    uj, sj, tj = _newton(lambda y: _gap(a.value(y[0], va), tool.value(y[1], y[2]),
+                                        a.getDN(y[0], va, 1, 0), -tool.getDN(y[1], y[2], 1, 0),
+                                        -tool.getDN(y[1], y[2], 0, 1)),
                          [u0, s0, t0], scale, "the cut curve's crossing of the junction")
     part_a = _march(a, tool, _nodes(start, uj), x, scale, None)
     part_b = _march(b, tool, _nodes(uj, 1.0 - start), [vb, sj, tj], scale, touch)
@@ -271,15 +280,15 @@ def _march(surface, tool, us, x, scale, touch, stop=None):
     for u in us:
         if touch is not None and u == touch[0]:
             side = touch[1]
-            v, t = _newton(lambda y: (surface.value(u, y[0]) - tool.value(side, y[1]),
-                                      (surface.getDN(u, y[0], 0, 1),
-                                       -tool.getDN(side, y[1], 0, 1))),
+            v, t = _newton(lambda y: _gap(surface.value(u, y[0]), tool.value(side, y[1]),
+                                          surface.getDN(u, y[0], 0, 1),
+                                          -tool.getDN(side, y[1], 0, 1)),
                            [x[0], x[2]], scale, "the trimlines' crossing")
             sol.append((u, v, side, t))
             break
-        x = _newton(lambda y: (surface.value(u, y[0]) - tool.value(y[1], y[2]),
-                               (surface.getDN(u, y[0], 0, 1), -tool.getDN(y[1], y[2], 1, 0),
-                                -tool.getDN(y[1], y[2], 0, 1))), x, scale, "the cut curve")
+        x = _newton(lambda y: _gap(surface.value(u, y[0]), tool.value(y[1], y[2]),
+                                   surface.getDN(u, y[0], 0, 1), -tool.getDN(y[1], y[2], 1, 0),
+                                   -tool.getDN(y[1], y[2], 0, 1)), x, scale, "the cut curve")
         sol.append((u, *x))
         if stop is not None and stop(sol[-1]):
             break
