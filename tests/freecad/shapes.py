@@ -545,6 +545,20 @@ def boss_over_hole():
                           and abs(e.Length - 2.807) < 1e-3)
 
 
+def side_hole_through_blind_hole():
+    """A 30 x 30 x 10 block with a blind hole r = 3 at (15, 15), its floor at z = 4,
+    and a side hole r = 1.5 along x, its axis at y = 15.5, z = 4.5, which crosses the
+    hole half a radius above the floor and cuts a trough in it. Returns (solid, names
+    of the floor's two straight edges along the trough, at y = 15.5 -+ sqrt 2, from
+    wall to wall), convex edges that end where the side hole opens the hole's wall."""
+    s = Part.makeBox(30, 30, 10).cut(Part.makeCylinder(3, 7, V(15, 15, 4)))
+    s = s.cut(Part.makeCylinder(1.5, 32, V(-1, 15.5, 4.5), V(1, 0, 0))).removeSplitter()
+    return s, ["Edge%d" % (i + 1) for i, e in sorted(
+        enumerate(s.Edges), key=lambda q: q[1].BoundBox.YMin)
+        if isinstance(e.Curve, Part.Line) and abs(e.BoundBox.ZMin - 4) < 1e-9
+        and abs(e.BoundBox.ZMax - 4) < 1e-9 and e.BoundBox.XLength > 1]
+
+
 def as_nurbs(s, names):
     """(s.toNurbs() as a solid, the names of its edges at the given edges of s)."""
     points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter

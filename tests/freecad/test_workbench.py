@@ -623,7 +623,7 @@ def test_end_face_that_cannot_grow_keeps_occt_face(monkeypatch):
     """Fault injection: no growth region can be built for the L bracket's inner edge's
     end faces. OCCT's face is kept with the reason, the solid (OCCT's, with its own
     grown end faces) is valid and the verdict is G1, never G2."""
-    monkeypatch.setattr(fl, "_growth", lambda face, edge, tol: None)
+    monkeypatch.setattr(fl, "_growth", lambda face, edge, tol, across=None: None)
     s, _, inner = shapes.l_bracket()
     solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
     assert_valid(solid)
@@ -3424,6 +3424,50 @@ def test_a_pocket_floor_edge_running_into_a_through_hole_is_g2(monkeypatch):
     solid, rep = C2Blend.fillet_report(s, [name], 1.0, label="Block")
     assert not rep["blends"] and rep["verdict"] == "G1"
     assert "does not close again once grown" in rep["kept_occt_faces"][0]["reason"]
+
+
+def test_a_convex_edge_ending_where_a_side_hole_opens_a_wall_is_g2():
+    """A blind hole's floor edge along a side hole's trough (shapes.side_hole_through_
+    blind_hole): its convex fillet ends on the hole's wall r = 3 just where the side
+    hole opens it. The wall grows by the region under each of the blend's ends, bounded
+    by the end section, the floor's circle and, below the floor, the intersection of
+    the wall with the side hole: past the end of the wall's edge there, a B-spline that
+    OCCT's Boolean made, which ends at the floor. No leg could follow it, so the fillet
+    was kept as OCCT's ("an end of its blend leaves face Face8 of the original solid
+    away from the face's corners"; the same kept 2 of 200 random machined blocks). The
+    leg now runs along the intersection of the two cylinders (fl._leg_along); the
+    wall's rebuilt wire gave no valid face there, and the wall and region are unified
+    instead. At R = 0.2, 0.5 and 0.8, one edge and both, each fillet is G2, the solid
+    passes the BOP check, the wall's edges below the floor lie on the wall, one per
+    blend end on the side hole too (the closed forms of both cylinders, to 1e-7), and
+    the volume drops by between 0 and R x R times the edges' length."""
+    s, names = shapes.side_hole_through_blind_hole()
+    assert len(names) == 2
+    length = s.getElement(names[0]).Length  # a chord of the floor at 0.5 - sqrt 2 from
+    assert abs(length - 2.0 * math.sqrt(9.0 - (0.5 - math.sqrt(2.0)) ** 2)) < 1e-9  # its centre
+
+    def on_wall(p):
+        return abs(math.hypot(p.x - 15.0, p.y - 15.0) - 3.0)
+
+    def on_side_hole(p):
+        return abs(math.hypot(p.y - 15.5, p.z - 4.5) - 1.5)
+
+    for r, selected in ((0.2, names[:1]), (0.5, names[1:]), (0.8, names)):
+        solid, rep = C2Blend.fillet_report(s, selected, r, label="Block")
+        assert_valid(solid)
+        assert_g2(rep)
+        assert len(rep["blends"]) == len(selected) and not rep["kept_occt_faces"]
+        assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+        assert 0.0 < s.Volume - solid.Volume < r * r * length * len(selected)
+        (wall,) = [f for f in solid.Faces if isinstance(f.Surface, Part.Cylinder)
+                   and abs(f.Surface.Radius - 3.0) < 1e-9]
+        below = [e for e in wall.Edges if e.BoundBox.ZMin < 4.0 - 1e-6]
+        points = [[e.valueAt(e.FirstParameter + (e.LastParameter - e.FirstParameter) * k / 8)
+                   for k in range(9)] for e in below]
+        assert max(on_wall(p) for ps in points for p in ps) < 1e-7
+        legs = [ps for ps in points if max(on_side_hole(p) for p in ps) < 1e-7]
+        assert len(legs) == 2 * len(selected)
+        assert len(below) == 4 * len(selected)  # a leg and an end section at each end
 
 
 def test_an_edge_two_fillets_shorten_from_both_ends_keeps_its_piece(monkeypatch):

@@ -488,14 +488,34 @@ def _leg(curve, p, corner, tol):
     return Part.Edge(curve, lo, hi)
 
 
-def _growth(face, edge, tol):
+def _leg_along(face, e, p, corner, tol, across):
+    """The leg (_leg) from point p to `corner` along face's edge e, extended past its
+    end where needed: along its curve, or, where that is an approximation that ends
+    there (a B-spline made by a Boolean), along the intersection of face's surface with
+    across(e), the surface of the face on e's other side (None where there is none)."""
+    leg = _leg(e.Curve, p, corner, tol)
+    if leg is not None or not isinstance(e.Curve, Part.BSplineCurve):
+        return leg
+    other = across(e)
+    if other is None:
+        return None
+    try:
+        curves = face.Surface.intersectSS(other)
+    except Part.OCCError:
+        return None
+    return next((g for g in (_leg(c, p, corner, tol) for c in curves) if g is not None),
+                None)
+
+
+def _growth(face, edge, tol, across=lambda e: None):
     """The region by which a fillet's end extends `face`: a concave fillet adds
     material, a convex one ending on a face that bulges out (a box edge ending on a
     cylinder) uncovers some. The region lies on the face's surface, bounded by `edge`
     (the blend's end section, on that surface outside the face) and two legs from its
     ends to a vertex of the face (the corner), along the curves of the face's edges
-    there, extended past them where needed. Returns (region face, corner point, legs),
-    or None when edge does not span such a corner or bounds no region with the legs."""
+    there, extended past them where needed (_leg_along; across(e): the surface beyond
+    face's edge e, or None). Returns (region face, corner point, legs), or None when
+    edge does not span such a corner or bounds no region with the legs."""
     ends = [v.Point for v in edge.Vertexes]
     if len(ends) != 2:
         return None
@@ -503,8 +523,8 @@ def _growth(face, edge, tol):
     for corner in face.Vertexes:
         at = [e for e in face.Edges
               if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
-        legs = [next((g for g in (_leg(e.Curve, p, corner.Point, tol) for e in at)
-                      if g is not None), None) for p in ends]
+        legs = [next((g for g in (_leg_along(face, e, p, corner.Point, tol, across)
+                                  for e in at) if g is not None), None) for p in ends]
         if None not in legs:
             spans.append((sum(g.Length for g in legs), corner, legs))
     if not spans:
@@ -523,7 +543,7 @@ def _growth(face, edge, tol):
     return region, corner.Point, legs
 
 
-def _parts(face, edge, tol):
+def _parts(face, edge, tol, across):
     """How face grows along an edge on its surface that does not lie on it: ([parts of
     edge on face], [(part off face, its _growth)]), or None when a part off the face
     spans no corner. The edge is one part off the face (a fillet's end section beyond
@@ -531,13 +551,13 @@ def _parts(face, edge, tol):
     patch where two concave fillets meet a convex one cuts across the corner of the
     face between the concave ones, whose surface the convex fillet uncovers (a
     gusset's sloped edge meeting the floor, R = 1: the patch's edge on the floor cuts
-    the corner of the gusset's footprint 0.02 deep)."""
-    g = _growth(face, edge, tol)
+    the corner of the gusset's footprint 0.02 deep). across: as _growth takes it."""
+    g = _growth(face, edge, tol, across)
     if g is not None:
         return [], [(edge, g)]
     parts = face.copy().generalFuse([edge], tol)[1][1]  # a copy: see _cut_face
     on = [p for p in parts if _edge_on_face(p, face, tol)]
-    off = [(p, _growth(face, p, tol)) for p in parts if not any(p is q for q in on)]
+    off = [(p, _growth(face, p, tol, across)) for p in parts if not any(p is q for q in on)]
     if not on or any(g is None for _, g in off):
         return None
     return on, off
@@ -561,20 +581,23 @@ def _end_at(edge, corner, p, tol):
     return Part.Edge(c, min(s, far), max(s, far))
 
 
-def _grown(face, section, whole, corner, region, tol):
+def _grown(face, section, whole, corner, region, legs, tol):
     """face (a piece of an original face that keeps the vertex `corner`) grown by
-    `region` (_growth): its two edges at the corner end instead at the ends of
-    `section` (shortened or extended along their curves, or left out where one ends
-    there already: the part of an edge crossing the face's corner, _parts, has the
-    face's edges at the corner as legs), and `whole` joins them: the section, or the
-    edge it is a part of, which then replaces the face's edges along its other parts
-    (OCCT's corner patch's edge: the plate filling its hole turned from the faces
+    `region` (_growth, whose legs run from the section's ends to the corner): its two
+    edges at the corner end instead at the ends of `section` (shortened or extended
+    along their curves, or left out where one ends there already: the part of an edge
+    crossing the face's corner, _parts, has the face's edges at the corner as legs; or
+    kept whole and continued by the leg where that runs past its end along the
+    intersection with the next face, _leg_along), and `whole` joins them: the section,
+    or the edge it is a part of, which then replaces the face's edges along its other
+    parts (OCCT's corner patch's edge: the plate filling its hole turned from the faces
     around it by up to 5.6e-3 rad where the edge was split in three, 2.4e-4 whole). Its
     other wires are kept. Rebuilding the wire keeps the section's edge whole, where a
     Boolean fuse of face and region may split it near its ends (a G2 section leaves a
-    plane as d^3, so it runs within 1e-7 of a leg there). Raises ValueError when a
-    section end is not on the curves of the corner's edges, or the grown face's area
-    is not the face's plus the region's."""
+    plane as d^3, so it runs within 1e-7 of a leg there); the two are unified only
+    where the rebuilt face is not valid or has the wrong area. Raises ValueError when the face does not
+    have two edges at the corner, a section end is on neither their curves nor a leg,
+    or the grown face's area is not the face's plus the region's."""
     face = face.copy()  # the fix below may shift the curves of its edges on its surface
     # by a period, in face too (the edges it keeps are face's): not in its neighbours
     area = face.Area
@@ -585,18 +608,28 @@ def _grown(face, section, whole, corner, region, tol):
               if any((v.Point - corner).Length <= tol for v in e.Vertexes)]
         if not at:
             continue
-        moved = []
+        if len(at) != 2:
+            raise ValueError("the face has %d edges at its corner (%.6g, %.6g, %.6g)"
+                             % ((len(at),) + tuple(corner)))
+        moved, drop = [], []
         for p in ends:
-            if len(at) == 2 and any((v.Point - p).Length <= tol
-                                    for e in at for v in e.Vertexes):
-                continue  # an edge at the corner ends there: the region's leg
-            g = next((g for g in (_end_at(e, corner, p, tol) for e in at) if g), None)
-            if len(at) != 2 or g is None:
+            ending = [e for e in at if any((v.Point - p).Length <= tol for v in e.Vertexes)]
+            if ending:  # an edge at the corner ends there: the region's leg
+                drop += ending
+                continue
+            g = next(((e, g) for e, g in ((e, _end_at(e, corner, p, tol)) for e in at) if g),
+                     None)
+            if g is not None:  # shortened or extended along its curve
+                drop.append(g[0])
+                moved.append(g[1])
+                continue
+            leg = next((g for g in legs if any((v.Point - p).Length <= tol
+                                               for v in g.Vertexes)), None)
+            if leg is None:
                 raise ValueError("the end section's ends are not on the curves of the "
                                  "face's two edges at its corner (%.6g, %.6g, %.6g)"
                                  % tuple(corner))
-            moved.append(g)
-        drop = list(at)
+            moved.append(leg)  # the edge it continues is kept whole
         if whole is not section:
             drop += [e for e in w.Edges if not any(e.isSame(x) for x in at) and all(
                 whole.distToShape(Part.Vertex(q))[0] <= tol for q in _edge_points(e))]
@@ -609,7 +642,25 @@ def _grown(face, section, whole, corner, region, tol):
     # surface, which a new face on a copy of the surface would lack. The fix adds the
     # new edges' curves on the surface.
     out = face.replaceShape(swap)
-    _validate(out)
+    try:
+        _validate(out)
+        _check_growth(out, area, region, tol)
+    except (ValueError, Part.OCCError):
+        # the rebuild failed ("NULL shape", or a wrong area: a blind hole's wall, whose
+        # domain spans more than a period round a side hole's opening, grown by a leg
+        # along that opening's edge, _leg_along): face and region unified, when they
+        # make one face (a Boolean fuse left the two apart once the wall had grown at
+        # one end)
+        fused = Part.Shell([face, region]).removeSplitter().Faces
+        if len(fused) != 1:
+            raise
+        out = fused[0]
+        _check_growth(out, area, region, tol)
+    return out
+
+
+def _check_growth(out, area, region, tol):
+    """Raise ValueError unless face `out`'s area is a face's `area` plus the region's."""
     miss = abs(out.Area - area - region.Area)
     # OCCT's area is off by up to 9e-6 (relative) on a face with long B-spline edges (a
     # helical ridge's section by a cylinder's end plane: 2.7e-3 of 307 once grown, by
@@ -619,7 +670,6 @@ def _grown(face, section, whole, corner, region, tol):
             miss > 0.5 * region.Area or not _on_face(out, _probe(region), tol)):
         raise ValueError("the grown face's area %.9g is not the face's %.9g plus the "
                          "region's %.9g" % (out.Area, area, region.Area))
-    return out
 
 
 def _edge_points(edge, fractions=(0.25, 0.5, 0.75)):
@@ -1133,14 +1183,16 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         for e in t.tools:
             if any(e is x for x in t.inside):
                 continue
-            parts = _parts(t.orig, e, tol)
+            parts = _parts(t.orig, e, tol, lambda x, f=t.orig: next(
+                (g.Surface for g in shape.ancestorsOfType(x, Part.Face) if not g.isSame(f)),
+                None))
             if parts is None:
                 raise Unassembled(t.owners, "an end of its blend leaves face %s of the "
                                   "original solid away from the face's corners"
                                   % ck.element_name(shape, t.orig, "Face"))
             t.inside += parts[0]
             for section, (region, corner, legs) in parts[1]:
-                t.grown.append((section, e, corner, region))
+                t.grown.append((section, e, corner, region, legs))
                 t.legs += legs
                 for leg in legs:  # a leg beyond the face's edges cuts the face it crosses
                     if any(_edge_on_face(leg, x, tol) for x in t.orig.Edges):
@@ -1163,14 +1215,14 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     for t in touched:
         try:
             pieces = _cut_face(t.orig, t.inside, sharp, t.legs, tol)
-            for section, whole, corner, region in t.grown:  # the fillets' end sections
+            for section, whole, corner, region, legs in t.grown:  # the fillets' end sections
                 # extend the face: at each corner, the piece keeping it grows
                 k = next((i for i, f in enumerate(pieces) if any(
                     (v.Point - corner).Length <= tol for v in f.Vertexes)), None)
                 if k is None:
                     raise ValueError("no piece keeps the corner (%.6g, %.6g, %.6g)"
                                      % tuple(corner))
-                pieces[k] = _grown(pieces[k], section, whole, corner, region, tol)
+                pieces[k] = _grown(pieces[k], section, whole, corner, region, legs, tol)
         except Exception as ex:
             pieces = _occt_pieces(result, t, drop + kept_fillets, tol)
             if pieces is None:
