@@ -559,6 +559,35 @@ def side_hole_through_blind_hole():
         and abs(e.BoundBox.ZMax - 4) < 1e-9 and e.BoundBox.XLength > 1]
 
 
+def two_bosses_and_a_hole():
+    """A 25.62 x 33.03 x 6.472 block with a boss r = 4.838 at (11.94, 21.99), 2.643 high,
+    a blind hole r = 3.166 at (10.87, 27.27), 3.422 deep, cut through the boss's foot
+    up to z = 7.472, and a boss r = 4.465 at (18.47, 18.51), 5.662 high, which meets
+    the first (a part of the random machined survey, --random-machined 60 --seed 2
+    --turned, number 33). Returns (solid, names of the 6 edges selected there: the
+    second boss's foot arc and top rim, the hole's short rim arc on the top face, the
+    first boss's top rim arc, the vertical edge where the hole cuts the first boss, and
+    the block's vertical edge at x = 0, y = 33.03)."""
+    c = 6.472
+    s = Part.makeBox(25.62, 33.03, c)
+    s = s.fuse(Part.makeCylinder(4.838, 0.4084 * c, V(11.94, 21.99, c))).removeSplitter()
+    s = s.cut(Part.makeCylinder(3.166, 0.5287 * c + 1, V(10.87, 27.27, 0.4713 * c)))
+    s = s.removeSplitter().fuse(Part.makeCylinder(4.465, 0.8749 * c, V(18.47, 18.51, c)))
+    s = s.removeSplitter()
+
+    def arc(radius, z, length=None):
+        return lambda e: (isinstance(e.Curve, Part.Circle) and abs(e.Curve.Radius - radius)
+                          < 1e-6 and abs(e.BoundBox.ZMax - z) < 1e-6
+                          and (length is None or abs(e.Length - length) < 0.1))
+
+    def vertical(x, y):
+        return lambda e: (isinstance(e.Curve, Part.Line) and e.BoundBox.ZLength > 0.5
+                          and abs(e.BoundBox.XMin - x) < 1e-3 and abs(e.BoundBox.YMin - y) < 1e-3)
+    return s, [_edge_named(s, p) for p in (
+        arc(4.465, c, 8.79), arc(4.465, 0.8749 * c + c), arc(3.166, c, 0.87),
+        arc(4.838, 0.4084 * c + c), vertical(8.401, 25.288), vertical(0.0, 33.03))]
+
+
 def as_nurbs(s, names):
     """(s.toNurbs() as a solid, the names of its edges at the given edges of s)."""
     points = [s.getElement(n).valueAt(0.63 * s.getElement(n).FirstParameter

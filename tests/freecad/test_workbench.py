@@ -3168,7 +3168,9 @@ def test_a_rim_meeting_kept_fillets_of_crossing_bores_is_kept_with_its_reason():
     on the bore's face where OCCT's kept fillets meet it: growing that face by a region
     bounded by its end section made a null face, and the fillet failed with OCCT's
     "BRepCheck_Analyzer::Init() - NULL shape". Now that blend is kept too, with its
-    reason, and the solid is OCCT's (its volume, to 1e-12). The rim alone is G2."""
+    reason (an edge of the kept fillets leaves the bore's face away from its corners,
+    and OCCT's faces cannot take its place, as the rim's blend ends on it), and the
+    solid is OCCT's (its volume, to 1e-12). The rim alone is G2."""
     s, bores, rim = shapes.crossing_bores()
     solid, rep = C2Blend.fillet_report(s, bores + [rim], 0.5, label="Bored")
     assert_valid(solid)
@@ -3176,8 +3178,9 @@ def test_a_rim_meeting_kept_fillets_of_crossing_bores_is_kept_with_its_reason():
     assert solid.Volume == pytest.approx(
         s.makeFillet(0.5, [s.getElement(e) for e in bores + [rim]]).Volume, rel=1e-12)
     reasons = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
-    assert re.fullmatch(r"an end of its blend leaves face Face\d+ of the original solid "
-                        r"away from the face's corners", reasons["Bored." + rim])
+    assert re.fullmatch(r"face Face\d+ of the original solid cannot be cut along its blend "
+                        r"\(an edge of a fillet kept as OCCT's, or of a corner patch, leaves "
+                        r"it away from its corners\)", reasons["Bored." + rim])
     assert any("the faces are parallel at the contact near (10, 10, " in r
                for r in reasons.values())
     solid, rep = C2Blend.fillet_report(s, [rim], 0.5, label="Bored")
@@ -3468,6 +3471,44 @@ def test_a_convex_edge_ending_where_a_side_hole_opens_a_wall_is_g2():
         legs = [ps for ps in points if max(on_side_hole(p) for p in ps) < 1e-7]
         assert len(legs) == 2 * len(selected)
         assert len(below) == 4 * len(selected)  # a leg and an end section at each end
+
+
+def test_a_fillet_kept_beside_blends_does_not_fail_the_whole_fillet():
+    """shapes.two_bosses_and_a_hole's 6 edges at R = 0.125: the blend of the hole's
+    edge across the first boss cannot end on the block's top face, and OCCT's fillet
+    there is kept; an edge of that kept fillet also leaves the top face away from its
+    corners. That failure used to keep every blend touching the
+    top face, and the sewing of what was left failed outright ("sewing the blend faces
+    to the solid failed: 1 shell(s), 6 free edge(s)"): no fillet at all. Now a blend's
+    own end keeps only that blend, and a kept fillet's edge makes OCCT's faces stand in
+    for that face where they can (else the blends on it are kept, saying so). The
+    solid is valid and passes the BOP check; the second boss's top rim is a G2 blend
+    whose trimlines are the circles r = 4.465 - R at z = 12.134 and r = 4.465 at
+    z = 12.134 - R about its axis (to 1e-7); the other 5 are kept, each with a reason."""
+    s, names = shapes.two_bosses_and_a_hole()
+    r, top, radius = 0.125, 6.472 * 1.8749, 4.465
+    solid, rep = C2Blend.fillet_report(s, names, r, label="Part")
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert [b["where"] for b in rep["blends"]] == ["Part.%s" % names[1]]
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    kept = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
+    assert set(kept) == {"Part.%s" % n for n in names if n != names[1]} and all(kept.values())
+    blend = [f for f in solid.Faces if isinstance(f.Surface, Part.BSplineSurface)
+             and abs(f.BoundBox.ZMax - top) < 1e-6 and abs(f.BoundBox.ZMin - (top - r)) < 1e-6]
+    assert len(blend) == 1
+    circles, found = [(radius - r, top), (radius, top - r)], set()
+    for e in blend[0].Edges:
+        if e.isSeam(blend[0]):
+            continue
+        at = [(math.hypot(p.x - 18.47, p.y - 18.51), p.z)
+              for p in (e.valueAt(e.FirstParameter + (e.LastParameter - e.FirstParameter)
+                                  * k / 8) for k in range(9))]
+        on = [c for c in circles if all(abs(a - c[0]) < 1e-7 and abs(b - c[1]) < 1e-7
+                                        for a, b in at)]
+        assert on, at
+        found.add(on[0])
+    assert found == set(circles)
 
 
 def test_an_edge_two_fillets_shorten_from_both_ends_keeps_its_piece(monkeypatch):

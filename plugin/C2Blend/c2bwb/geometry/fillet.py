@@ -1128,11 +1128,12 @@ class _Touched:
     that do (_parts); grown: an (end section, the edge it is or is a part of, corner,
     region) for each region it grows by (_growth, _grown); legs: those of its and its
     neighbours' growth regions, along which it keeps its corners (_cut_face); owners:
-    the blends concerned."""
+    the blends concerned; occt: an edge of a fillet kept as OCCT's (or of a corner
+    patch) leaves it away from its corners, so only OCCT's faces can take its place."""
 
     def __init__(self, orig):
         self.orig, self.tools, self.inside, self.grown, self.legs = orig, [], [], [], []
-        self.owners = []
+        self.owners, self.occt = [], False
 
     @staticmethod
     def of(touched, orig, blend):
@@ -1187,7 +1188,11 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                 (g.Surface for g in shape.ancestorsOfType(x, Part.Face) if not g.isSame(f)),
                 None))
             if parts is None:
-                raise Unassembled(t.owners, "an end of its blend leaves face %s of the "
+                own = [b for b in t.owners if any(e.isSame(x) for x in b.face.Edges)]
+                if not own:  # an edge of a fillet kept as OCCT's, or of a corner patch
+                    t.occt = True  # OCCT's faces may take this one's place (below)
+                    continue
+                raise Unassembled(own, "an end of its blend leaves face %s of the "
                                   "original solid away from the face's corners"
                                   % ck.element_name(shape, t.orig, "Face"))
             t.inside += parts[0]
@@ -1214,6 +1219,9 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
              and not any(e.isSame(r) for r in result.Edges) and _consumed(e, kept, tol)]
     for t in touched:
         try:
+            if t.occt:
+                raise ValueError("an edge of a fillet kept as OCCT's, or of a corner "
+                                 "patch, leaves it away from its corners")
             pieces = _cut_face(t.orig, t.inside, sharp, t.legs, tol)
             for section, whole, corner, region, legs in t.grown:  # the fillets' end sections
                 # extend the face: at each corner, the piece keeping it grows
