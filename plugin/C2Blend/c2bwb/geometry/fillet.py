@@ -595,9 +595,9 @@ def _grown(face, section, whole, corner, region, legs, tol):
     other wires are kept. Rebuilding the wire keeps the section's edge whole, where a
     Boolean fuse of face and region may split it near its ends (a G2 section leaves a
     plane as d^3, so it runs within 1e-7 of a leg there); the two are unified only
-    where the rebuilt face is not valid or has the wrong area. Raises ValueError when the face does not
-    have two edges at the corner, a section end is on neither their curves nor a leg,
-    or the grown face's area is not the face's plus the region's."""
+    where the rebuilt face is not valid or has the wrong area. Raises ValueError when
+    the face does not have two edges at the corner, a section end is on neither their
+    curves nor a leg, or the grown face's area is not the face's plus the region's."""
     face = face.copy()  # the fix below may shift the curves of its edges on its surface
     # by a period, in face too (the edges it keeps are face's): not in its neighbours
     area = face.Area
@@ -611,7 +611,7 @@ def _grown(face, section, whole, corner, region, legs, tol):
         if len(at) != 2:
             raise ValueError("the face has %d edges at its corner (%.6g, %.6g, %.6g)"
                              % ((len(at),) + tuple(corner)))
-        moved, drop = [], []
+        moved, drop, continued = [], [], False
         for p in ends:
             ending = [e for e in at if any((v.Point - p).Length <= tol for v in e.Vertexes)]
             if ending:  # an edge at the corner ends there: the region's leg
@@ -629,7 +629,10 @@ def _grown(face, section, whole, corner, region, legs, tol):
                 raise ValueError("the end section's ends are not on the curves of the "
                                  "face's two edges at its corner (%.6g, %.6g, %.6g)"
                                  % tuple(corner))
-            moved.append(leg)  # the edge it continues is kept whole
+            moved.append(leg)
+            continued = True
+        if not continued:
+            drop = list(at)  # else the edge a leg continues is kept whole
         if whole is not section:
             drop += [e for e in w.Edges if not any(e.isSame(x) for x in at) and all(
                 whole.distToShape(Part.Vertex(q))[0] <= tol for q in _edge_points(e))]
