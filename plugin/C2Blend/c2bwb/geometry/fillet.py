@@ -488,23 +488,27 @@ def _leg(curve, p, corner, tol):
     return Part.Edge(curve, lo, hi)
 
 
-def _leg_along(face, e, p, corner, tol, across):
+def _leg_along(face, e, p, corner, tol, across, crossings):
     """The leg (_leg) from point p to `corner` along face's edge e, extended past its
     end where needed: along its curve, or, where that is an approximation that ends
     there (a B-spline made by a Boolean), along the intersection of face's surface with
-    across(e), the surface of the face on e's other side (None where there is none)."""
+    across(e), the surface of the face on e's other side (None where there is none),
+    when p lies on that surface. crossings: a dict keeping each edge's intersection
+    curves, computed once."""
     leg = _leg(e.Curve, p, corner, tol)
     if leg is not None or not isinstance(e.Curve, Part.BSplineCurve):
         return leg
     other = across(e)
-    if other is None:
+    if other is None or off_surface(other, p) > tol:
         return None
-    try:
-        curves = face.Surface.intersectSS(other)
-    except Part.OCCError:
-        return None
-    return next((g for g in (_leg(c, p, corner, tol) for c in curves) if g is not None),
-                None)
+    key = e.hashCode()
+    if key not in crossings:
+        try:
+            crossings[key] = face.Surface.intersectSS(other)
+        except Part.OCCError:
+            crossings[key] = []
+    return next((g for g in (_leg(c, p, corner, tol) for c in crossings[key])
+                 if g is not None), None)
 
 
 def _growth(face, edge, tol, across=lambda e: None):
@@ -519,11 +523,12 @@ def _growth(face, edge, tol, across=lambda e: None):
     ends = [v.Point for v in edge.Vertexes]
     if len(ends) != 2:
         return None
-    spans = []  # (length of the legs, corner, legs)
+    spans, crossings = [], {}  # (length of the legs, corner, legs); for _leg_along
     for corner in face.Vertexes:
         at = [e for e in face.Edges
               if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
-        legs = [next((g for g in (_leg_along(face, e, p, corner.Point, tol, across)
+        legs = [next((g for g in (_leg_along(face, e, p, corner.Point, tol, across,
+                                             crossings)
                                   for e in at) if g is not None), None) for p in ends]
         if None not in legs:
             spans.append((sum(g.Length for g in legs), corner, legs))
@@ -1184,12 +1189,14 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                     if not e.Degenerated and _face_under(e, [t.orig], tol) is not None]
         t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
                      and _edge_on_face(e, t.orig, tol)]
+
+        def across(x, f=t.orig):  # the surface beyond f's edge x
+            return next((g.Surface for g in shape.ancestorsOfType(x, Part.Face)
+                         if not g.isSame(f)), None)
         for e in t.tools:
             if any(e is x for x in t.inside):
                 continue
-            parts = _parts(t.orig, e, tol, lambda x, f=t.orig: next(
-                (g.Surface for g in shape.ancestorsOfType(x, Part.Face) if not g.isSame(f)),
-                None))
+            parts = _parts(t.orig, e, tol, across)
             if parts is None:
                 own = [b for b in t.owners if any(e.isSame(x) for x in b.face.Edges)]
                 if not own:  # an edge of a fillet kept as OCCT's, or of a corner patch
