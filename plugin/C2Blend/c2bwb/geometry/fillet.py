@@ -45,6 +45,7 @@ from . import bopcheck as bc
 from . import corners as cn
 from . import ends
 from . import solids as sl
+from . import strips as st
 from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
@@ -736,7 +737,9 @@ def _cut_face(face, tools, sharp, legs, tol):
     leg until it grows, _grown). A face across its surface's periodic range is cut
     _rebased (and, should that fail, as it is). Where OCCT's general fuse fails, the
     cut is made again with the closed tools _restarted where they cross the face's
-    seam, then half a period on, then with the tools' ends _snapped_to_seams."""
+    seam, then half a period on, then with the tools' ends _snapped_to_seams. A face
+    that winds round its surface is first cut strip by strip (_fused), and its pieces
+    kept are merged again (strips.merged)."""
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
     areas = {}
@@ -746,18 +749,20 @@ def _cut_face(face, tools, sharp, legs, tol):
         rebased = face
 
     def attempts():  # each remedy only where it changes a tool: the same cut fails again
+        if st.winds(face) is not None:
+            yield face, tools, True
         for f in ((rebased, face) if rebased is not face else (face,)):
-            yield f, tools
+            yield f, tools, False
             for remedy in (lambda: [_restarted(e, f, tol) for e in tools],
                            lambda: [_restarted(e) for e in tools],
                            lambda: _snapped_to_seams(tools, f, tol)):
                 cut = remedy()
                 if any(a is not b for a, b in zip(cut, tools)):
-                    yield f, cut
+                    yield f, cut, False
 
-    pieces = None
-    for f, cut in attempts():
-        again = _fused(f, cut, tol, areas)
+    pieces, in_strips = None, False
+    for f, cut, in_strips in attempts():
+        again = _fused(f, cut, tol, areas, in_strips)
         if pieces is None or not isinstance(again, str):
             pieces = again  # the first failure is the one to report
         if not isinstance(again, str):
@@ -772,23 +777,34 @@ def _cut_face(face, tools, sharp, legs, tol):
                    and all(g.distToShape(Part.Vertex(p))[0] > tol for g in legs)
                    for p in _edge_points(edge, (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)))
 
-    return [f for f in pieces if not any(touches(f, e) for e in sharp)]
+    kept = [f for f in pieces if not any(touches(f, e) for e in sharp)]
+    return st.merged(kept) if in_strips else kept
 
 
-def _fused(face, tools, tol, areas=None):
+def _fused(face, tools, tol, areas=None, in_strips=False):
     """The pieces of face cut along the edges `tools` by OCCT's general fuse (fuzzy value
     tol), or what went wrong (str): the fuse failed, its pieces do not make up the
     face (_amiss), or their edges do not follow a tool (within 10 tol, at its inner
     points). A closed tool must bound pieces: a scaled torus's face, rebased, was
     left whole along a closed trimline starting at its seam, which became an internal
-    edge of a piece. An open tool may end inside the face. areas: as for _amiss."""
+    edge of a piece. An open tool may end inside the face. areas: as for _amiss.
+    in_strips: the face, which winds round its surface (the cylinder's under a helical
+    ridge of 2 or 3 turns), is cut strip by strip (strips.py): OCCT's general fuse cuts
+    it wrongly as a whole."""
     try:
-        pieces = face.generalFuse(tools, tol)[0].Faces if tools else [face]
-    except Exception as ex:  # FreeCAD's Part and OCCT errors come in several classes
-        return occt_message(ex)
-    wrong = _amiss(face, pieces, areas, tools)
-    if wrong:
-        return wrong
+        parts = st.strips(face) if in_strips else [face]
+    except ValueError as ex:
+        return "cutting the face, which winds round its surface, into strips failed: %s" % ex
+    pieces = []
+    for part in parts:
+        try:
+            cut = part.generalFuse(tools, tol)[0].Faces if tools else [part]
+        except Exception as ex:  # FreeCAD's Part and OCCT errors come in several classes
+            return occt_message(ex)
+        wrong = _amiss(part, cut, areas, tools)
+        if wrong:
+            return wrong
+        pieces += cut
     edges = [e for f in pieces for e in f.Edges]
     every = Part.Compound(edges)
     bounds = Part.Compound([e for e in edges if e.Orientation in ("Forward", "Reversed")])

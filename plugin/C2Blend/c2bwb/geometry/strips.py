@@ -1,0 +1,260 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""A face that winds round its periodic surface, cut into strips (fillet._fused).
+
+The cylinder's face under a helical ridge of 2 or more turns (tests/freecad/shapes.
+helical_ridge) spans more than a period of its surface: with 3 turns its pcurves run
+from u = -11.3 to 11.3, 3.6 periods. OCCT's general fuse cuts such a face wrongly:
+along a helix midway between the ridge's turns, or along two lines of the cylinder's
+axis, its pieces' areas add up to more than the face's, and some pieces are not valid;
+with 2 turns its pieces add up, but OCCT's distance then puts points of the junction's
+edges on the piece between the turns, which was dropped as under the fillet. It cuts a
+face that spans at most half a period correctly.
+
+So the face's domain is cut here in its own parameter plane: its wires' pcurves are laid
+in the plane z = 0, and OCCT's general fuse cuts that planar face, where nothing winds,
+along lines across the winding direction at most half a period apart (through the
+face's vertices where they can be). Each planar piece then becomes a face on the
+surface (a strip), bounded by the pieces of the face's own edges (split where the lines
+cross them, so that they keep their vertices, whose tolerance covers gaps between the
+pcurves: 5.7e-5 where the 3-turn ridge's junction meets the top face) and by edges
+along the surface's iso-curves between the points where the lines cross those edges.
+The strips are cut as any face is, and the pieces kept are merged again.
+"""
+
+import FreeCAD
+import Part
+
+WINDS = 1e-3  # a face winds round its surface where it spans more than 1 + WINDS periods
+EPS = 1e-6  # of a period: a cut this close to a domain's end would leave a sliver
+SNAP = 1e-4  # largest gap, in the parameter plane, closed between a wire's pcurves
+# a strip's edges, laid on the surface by OCCT's projection, may come this many times
+# further off it than the face's own edges: the projection cannot always tell which end
+# of the period an edge ending on the surface's seam belongs to (the helical ridge's
+# cylinder face with 3 turns: a half turn of its junction came 2.4e-3 off, and the
+# strips are then refused)
+LAID_TOL = 10.0
+ISO_NODES = 16  # intervals of the interpolation of a curved iso-curve edge
+ON = 1e-9  # a planar piece's edge lies on a pcurve or line within this
+# the strips' areas add up to the face's within this: OCCT's own area of a face is no
+# closer (the 3-turn ridge's cylinder face: 462.838, 8.6e-4 over the closed form's
+# 462.442, the band between two helices 2.4 apart in z on a cylinder r = 10, cut by the
+# planes z = 0 and 12; the strips of the 2-turn one add up to its closed form to 7e-9)
+AREA_REL = 2e-3
+
+
+def winds(face):
+    """0 (u) or 1 (v): the direction in which face's domain spans more than a period
+    of its surface (by WINDS of one), or None where it does not in either (the pipe
+    face of the helical ridge spans one period plus 5e-7 of one)."""
+    s = face.Surface
+    r = face.ParameterRange
+    for k, (periodic, period) in enumerate(((s.isUPeriodic(), s.UPeriod), (s.isVPeriodic(),
+                                                                         s.VPeriod))):
+        if periodic and r[2 * k + 1] - r[2 * k] > period() * (1.0 + WINDS):
+            return k
+    return None
+
+
+def strips(face):
+    """The pieces of `face` each within half a period of its surface, where it winds
+    round it (winds; else [face]): [Part.Face] with face's orientation, whose areas add
+    up to face's. Raises ValueError saying what failed (a wire whose pcurves leave gaps
+    wider than SNAP, OCCT's cut of the planar domain, a strip that bounds no valid
+    face or whose edges OCCT lays off the surface)."""
+    k = winds(face)
+    if k is None:
+        return [face]
+    s = face.Surface
+    period = (s.UPeriod() if k == 0 else s.VPeriod())
+    edges, flat = [], []  # the face's edges, and their pcurves as planar edges
+    wires = []
+    for w in face.Wires:
+        es = list(w.OrderedEdges)
+        edges += es
+        wires.append(_flat_wire(face, es, flat))
+    outer = next(i for i, w in enumerate(face.Wires) if w.isSame(face.OuterWire))
+    domain = Part.Face(wires[outer])
+    holes = [w for i, w in enumerate(wires) if i != outer]
+    if holes:
+        domain.cutHoles(holes)
+    box = domain.BoundBox
+    lo, hi = (box.XMin, box.XMax) if k == 0 else (box.YMin, box.YMax)
+    a, b = (box.YMin - 1.0, box.YMax + 1.0) if k == 0 else (box.XMin - 1.0, box.XMax + 1.0)
+    cuts = _cuts(lo, hi, 0.5 * period, [v.Point.x if k == 0 else v.Point.y
+                                  for w in wires for v in w.Vertexes])
+    lines = [Part.LineSegment(*((FreeCAD.Vector(c, a, 0), FreeCAD.Vector(c, b, 0)) if k == 0
+                                else (FreeCAD.Vector(a, c, 0), FreeCAD.Vector(b, c, 0))))
+             .toShape() for c in cuts]
+    try:
+        pieces = domain.generalFuse(lines)[0].Faces
+    except Exception as ex:  # FreeCAD's Part and OCCT errors come in several classes
+        raise ValueError("cutting its domain into strips failed (%s)" % ex) from None
+    if abs(sum(f.Area for f in pieces) - domain.Area) > AREA_REL * domain.Area:
+        raise ValueError("its domain's strips do not make it up")
+    limit = LAID_TOL * max([1e-7] + [e.Tolerance for e in edges])
+    split = _split_edges(edges, flat, pieces)
+    out = [_laid(s, k, f, flat, split, face.Orientation, limit) for f in pieces]
+    total = sum(f.Area for f in out)
+    if abs(total - face.Area) > AREA_REL * face.Area:
+        raise ValueError("its strips' areas add up to %.6g, not its %.6g" % (total, face.Area))
+    return out
+
+
+def _cuts(lo, hi, step, at):
+    """Where to cut [lo, hi] so that no piece spans more than `step`: at the values
+    `at` (the face's vertices) where they can be, so that fewer of the face's edges are
+    split at new vertices, else `step` on from the last cut."""
+    inner = sorted(x for x in at if lo + EPS * step < x < hi - EPS * step)
+    out, last = [], lo
+    while hi - last > step:
+        reach = [x for x in inner if last + EPS * step < x <= last + step]
+        last = reach[-1] if reach else last + step
+        out.append(last)
+    return out
+
+
+def _flat_wire(face, edges, flat):
+    """The wire of face's `edges` (in order) as a closed wire in the plane z = 0 of their
+    pcurves on face (u, v as x, y; each with its edge's parameters), gaps between
+    consecutive pcurves (up to SNAP; the face's tolerance allows them) closed by moving
+    their ends together. Appends each planar curve to `flat`."""
+    curves = []
+    for e in edges:
+        c2d, a, b = face.curveOnSurface(e)[:3]
+        curves.append((c2d.toBSpline(a, b), e.Orientation == "Reversed"))
+    for (c, rc), (d, rd) in zip(curves, curves[1:] + curves[:1]):
+        i, j = (1 if rc else c.NbPoles), (d.NbPoles if rd else 1)  # c's end, d's start
+        p, q = c.getPole(i), d.getPole(j)
+        if (p - q).length() > SNAP:
+            raise ValueError("its pcurves leave a gap of %.2g in its parameter plane"
+                             % (p - q).length())
+        m = (p + q) * 0.5
+        c.setPole(i, m)
+        d.setPole(j, m)
+    out = []
+    for c, _ in curves:
+        g = Part.BSplineCurve()
+        g.buildFromPolesMultsKnots([FreeCAD.Vector(p.x, p.y, 0) for p in c.getPoles()],
+                                   c.getMultiplicities(), c.getKnots(), False, c.Degree,
+                                   c.getWeights())
+        flat.append(g)
+        out.append(g.toShape())
+    wire = Part.Wire(out)
+    if not wire.isClosed():
+        raise ValueError("its pcurves do not make a closed wire")
+    return wire
+
+
+def _source(e, flat):
+    """Index in `flat` of the planar curve that the planar edge e lies on, or None (it
+    lies on a cutting line)."""
+    m = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+    for i, g in enumerate(flat):
+        t = e.FirstParameter if g.FirstParameter <= e.FirstParameter <= g.LastParameter \
+            else None
+        if t is not None and (g.value(0.5 * (e.FirstParameter + e.LastParameter)) - m).Length \
+                <= ON:
+            return i
+    return None
+
+
+def _split_edges(edges, flat, pieces):
+    """{(index of an edge of `edges`, first parameter, last parameter): the piece of
+    that edge between them}: each edge split, keeping its vertices, at the parameters
+    where the planar `pieces`' edges on its pcurve (flat) end."""
+    cuts = {}
+    for f in pieces:
+        for e in f.Edges:
+            i = _source(e, flat)
+            if i is not None:
+                cuts.setdefault(i, set()).update((e.FirstParameter, e.LastParameter))
+    out = {}
+    for i, ts in cuts.items():
+        ts = sorted(ts)
+        inner = ts[1:-1]
+        parts = edges[i].split(inner).Edges if inner else [edges[i]]
+        for t0, t1 in zip(ts, ts[1:]):
+            piece = min(parts, key=lambda x: abs(x.FirstParameter - t0)
+                        + abs(x.LastParameter - t1))
+            out[(i, t0, t1)] = piece
+    return out
+
+
+def _laid(surface, k, flat_face, flat, split, orientation, limit):
+    """The face on `surface` whose domain is the planar face `flat_face` (u, v as x, y;
+    k: 0 where u winds, 1 where v does): bounded by the pieces (split) of the original
+    face's edges where flat_face's edges lie on their pcurves (flat), and by edges along
+    the surface's iso-curves elsewhere (the cutting lines, _along), with `orientation`.
+    Raises ValueError where OCCT's projection leaves an edge further than `limit` off
+    the surface."""
+    wires = []
+    for w in [flat_face.OuterWire] + [x for x in flat_face.Wires
+                                      if not x.isSame(flat_face.OuterWire)]:
+        ordered = list(w.OrderedEdges)
+        laid = [None] * len(ordered)
+        for n, e in enumerate(ordered):
+            i = _source(e, flat)
+            if i is not None:
+                laid[n] = split[(i, e.FirstParameter, e.LastParameter)]
+        ends = [x.Vertexes[0].Point for x in laid if x is not None] + \
+            [x.Vertexes[-1].Point for x in laid if x is not None]
+        for n, e in enumerate(ordered):
+            if laid[n] is None:
+                laid[n] = _along(surface, k, e, ends)
+        wires.append(Part.Wire([x for x in laid if x is not None]))
+    out = Part.Face(surface, wires[0])
+    if len(wires) > 1:
+        out.cutHoles(wires[1:])
+    out.validate()
+    if not out.isValid():
+        raise ValueError("a strip of it bounds no valid face")
+    worst = max(e.Tolerance for e in out.Edges)
+    if worst > limit:
+        raise ValueError("an edge of a strip of it lies %.2g off its surface (laid on it "
+                         "by projection)" % worst)
+    out.Orientation = orientation
+    return out
+
+
+def _along(surface, k, e, ends):
+    """The edge along a cutting line of the planar edge e (a line across the winding
+    direction k), between the points of `ends` (the ends of the strip's other edges)
+    nearest to its ends, on the surface's iso-curve there: a segment where that is a
+    line (a cylinder's or a cone's), else a B-spline through ISO_NODES + 1 of its points;
+    None where the two ends are one point."""
+    uv = [(v.Point.x, v.Point.y) for v in e.Vertexes]
+    p, q = (min(ends, key=lambda x: (x - surface.value(*w)).Length) if ends
+            else surface.value(*w) for w in uv)
+    if (p - q).Length == 0:
+        return None
+    c = uv[0][k]
+    iso = surface.uIso(c) if k == 0 else surface.vIso(c)
+    if isinstance(iso, Part.Line):
+        return Part.LineSegment(p, q).toShape()
+    t0, t1 = uv[0][1 - k], uv[1][1 - k]
+    pts = [iso.value(t0 + (t1 - t0) * j / ISO_NODES) for j in range(1, ISO_NODES)]
+    curve = Part.BSplineCurve()
+    curve.interpolate([p] + pts + [q])
+    return curve.toShape()
+
+
+def merged(pieces):
+    """The faces that `pieces` (cut from the strips of one face) make up, joined again
+    where they meet along the strips' cutting lines (OCCT's unification of faces on one
+    surface, on copies: sewing rewrites the faces' edges), so that the filleted solid
+    holds the face whole, not cut along lines that are no edges of the part. The
+    pieces as they are where that unification fails, or gives faces that are not valid
+    or do not add up to them."""
+    if len(pieces) < 2:
+        return pieces
+    sewn = Part.Compound([f.copy() for f in pieces])
+    sewn.sewShape()
+    try:
+        out = sewn.removeSplitter().Faces
+    except Exception:  # noqa: BLE001 - OCCT's, in several classes: keep the pieces
+        return pieces
+    area = sum(f.Area for f in pieces)
+    if not out or not all(f.isValid() for f in out) or \
+            abs(sum(f.Area for f in out) - area) > AREA_REL * area:
+        return pieces
+    return out
