@@ -749,7 +749,7 @@ def _cut_face(face, tools, sharp, legs, tol):
         rebased = face
 
     def attempts():  # each remedy only where it changes a tool: the same cut fails again
-        if st.winds(face) is not None:
+        if st.needs_strips(face):
             yield face, tools, True
         for f in ((rebased, face) if rebased is not face else (face,)):
             yield f, tools, False

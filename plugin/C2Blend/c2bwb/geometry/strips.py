@@ -24,6 +24,8 @@ The strips are cut as any face is, and the pieces kept are merged again.
 import FreeCAD
 import Part
 
+from .surface import winding
+
 WINDS = 1e-3  # a face winds round its surface where it spans more than 1 + WINDS periods
 EPS = 1e-6  # of a period: a cut this close to a domain's end would leave a sliver
 SNAP = 1e-4  # largest gap, in the parameter plane, closed between a wire's pcurves
@@ -42,26 +44,19 @@ ON = 1e-9  # a planar piece's edge lies on a pcurve or line within this
 AREA_REL = 2e-3
 
 
-def winds(face):
-    """0 (u) or 1 (v): the direction in which face's domain spans more than a period
-    of its surface (by WINDS of one), or None where it does not in either (the pipe
-    face of the helical ridge spans one period plus 5e-7 of one)."""
-    s = face.Surface
-    r = face.ParameterRange
-    for k, (periodic, period) in enumerate(((s.isUPeriodic(), s.UPeriod), (s.isVPeriodic(),
-                                                                         s.VPeriod))):
-        if periodic and r[2 * k + 1] - r[2 * k] > period() * (1.0 + WINDS):
-            return k
-    return None
+def needs_strips(face):
+    """True where face winds round its surface by more than WINDS of a period (the pipe
+    face of the helical ridge spans one period plus 5e-7 of one: it is cut whole)."""
+    return winding(face, WINDS) is not None
 
 
 def strips(face):
     """The pieces of `face` each within half a period of its surface, where it winds
-    round it (winds; else [face]): [Part.Face] with face's orientation, whose areas add
+    round it (needs_strips; else [face]): [Part.Face] with face's orientation, whose areas add
     up to face's. Raises ValueError saying what failed (a wire whose pcurves leave gaps
     wider than SNAP, OCCT's cut of the planar domain, a strip that bounds no valid
     face or whose edges OCCT lays off the surface)."""
-    k = winds(face)
+    k = winding(face, WINDS)
     if k is None:
         return [face]
     s = face.Surface

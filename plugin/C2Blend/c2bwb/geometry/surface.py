@@ -171,21 +171,30 @@ def domain_distance(face, p):
 
 def winds(face):
     """True when face's domain spans more than one period of its surface."""
-    return periods(face) > 1.0 + 1e-9
+    return winding(face) is not None
+
+
+def winding(face, margin=1e-9):
+    """0 (u) or 1 (v): the first direction in which face's domain spans more than 1 +
+    margin periods of its surface; None where it spans no more in either."""
+    spans = _spans(face)
+    return next((k for k in (0, 1) if spans[k] > 1.0 + margin), None)
 
 
 def periods(face):
     """How many periods of its surface face's domain spans: the larger of its spans in
     the surface's periodic directions, each divided by the period (0 when the surface
     is not periodic)."""
+    return max(_spans(face))
+
+
+def _spans(face):
+    """[u span, v span] of face's domain, each in periods of its surface (0 in a
+    direction where the surface is not periodic)."""
     s = face.Surface
     u0, u1, v0, v1 = face.ParameterRange
-    spans = [0.0]
-    if s.isUPeriodic():
-        spans.append((u1 - u0) / s.UPeriod())
-    if s.isVPeriodic():
-        spans.append((v1 - v0) / s.VPeriod())
-    return max(spans)
+    return [(u1 - u0) / s.UPeriod() if s.isUPeriodic() else 0.0,
+            (v1 - v0) / s.VPeriod() if s.isVPeriodic() else 0.0]
 
 
 def frame_or_none(face, u, v):
