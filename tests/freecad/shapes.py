@@ -559,6 +559,34 @@ def side_hole_through_blind_hole():
         and abs(e.BoundBox.ZMax - 4) < 1e-9 and e.BoundBox.XLength > 1]
 
 
+def hole_through_pocket_wall():
+    """A 20 x 30 x 9 block with a 6 x 10 pocket 3 deep (floor z = 6, its wall y = 15
+    from x = 3 to 9) and a blind hole r = 2.5 at (6, 15.5) down to z = 3, which cuts
+    through that wall: the hole's rim on the floor (convex) meets the floor's edges
+    along the wall (concave) at x = 6 -+ sqrt(2.5^2 - 0.5^2), y = 15, z = 6, where the
+    hole's wall meets the pocket's wall along a vertical (convex) edge up to z = 9 (the
+    shape of --random-machined 60 --seed 2, part 54). Returns (solid, names of the rim's
+    two arcs and the floor's two edges along the wall, names of the two vertical
+    edges)."""
+    s = Part.makeBox(20, 30, 9)
+    s = s.cut(Part.makeBox(6, 10, 4, V(3, 15, 6)))
+    s = s.cut(Part.makeCylinder(2.5, 7, V(6, 15.5, 3))).removeSplitter()
+
+    def flat(e):
+        return abs(e.BoundBox.ZMin - 6) < 1e-9 and e.BoundBox.ZLength < 1e-9
+
+    def on_wall(e):
+        return abs(e.BoundBox.YMin - 15) < 1e-9 and e.BoundBox.YLength < 1e-9
+
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if flat(e) and (
+        isinstance(e.Curve, Part.Circle) or isinstance(e.Curve, Part.Line) and on_wall(e))]
+    x = (6 - math.sqrt(6.0), 6 + math.sqrt(6.0))
+    vertical = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                if on_wall(e) and e.BoundBox.ZLength > 2.9
+                and min(abs(e.BoundBox.XMin - c) for c in x) < 1e-9]
+    return s, names, vertical
+
+
 def two_bosses_and_a_hole():
     """A 25.62 x 33.03 x 6.472 block with a boss r = 4.838 at (11.94, 21.99), 2.643 high,
     a blind hole r = 3.166 at (10.87, 27.27), 3.422 deep, cut through the boss's foot

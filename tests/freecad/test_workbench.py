@@ -3540,6 +3540,42 @@ def test_a_convex_edge_ending_where_a_side_hole_opens_a_wall_is_g2():
         assert len(below) == 4 * len(selected)  # a leg and an end section at each end
 
 
+@pytest.mark.parametrize("radius", [0.15, 0.3])
+def test_blends_kept_at_a_mixed_vertex_name_the_edge_that_makes_it_a_corner(radius):
+    """shapes.hole_through_pocket_wall: the hole's rim (convex) and the pocket floor's
+    edges along its wall (concave) meet where the hole cuts the wall, at a vertex whose
+    third edge, the hole's wall on the pocket's wall, is not selected. No blend ends
+    there (their ends cannot be cut back, or OCCT puts a face between them), and each is
+    kept as OCCT's with its reason, which now ends by naming the vertical edge(s) at its
+    ends by their end points: x = 6
+    -+ sqrt(2.5^2 - 0.5^2), y = 15, z = 6 and 9 (closed form). Selected too, as the
+    message says, those edges make the vertices corners: nothing is kept, 2 corners are
+    filled, every trimline is G2 and the solid passes the BOP check."""
+    s, names, vertical = shapes.hole_through_pocket_wall()
+    _, rep = C2Blend.fillet_report(s, names, radius)
+    kept = rep["kept_occt_faces"]
+    assert {w for k in kept for w in k["where"].split(", ") if w.startswith("Shape.Edge")} \
+        == {"Shape." + n for n in names}
+    assert kept and all(" selected too, the fillets meet at a corner there, which C2Blend "
+                        "fills" in k["reason"] for k in kept)
+    named = set()
+    for k in kept:
+        for m in re.finditer(r"the edge from \(([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+)\) to "
+                             r"\(([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+)\)", k["reason"]):
+            x0, y0, z0, x1, y1, z1 = (float(g) for g in m.groups())
+            assert x0 == pytest.approx(x1, abs=1e-3) and y0 == y1 == pytest.approx(15.0)
+            assert {z0, z1} == {6.0, 9.0}
+            assert min(abs(x0 - (6 + d * math.sqrt(6.0))) for d in (-1, 1)) < 1e-3
+            named.add(round(x0, 3))
+    assert named == {round(6 - math.sqrt(6.0), 3), round(6 + math.sqrt(6.0), 3)}
+    solid, rep = C2Blend.fillet_report(s, names + vertical, radius)
+    assert_valid(solid)
+    assert [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")] == []
+    assert len(rep["corner_patches"]) == 2
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
 def test_a_fillet_kept_beside_blends_does_not_fail_the_whole_fillet():
     """shapes.two_bosses_and_a_hole's 6 edges at R = 0.125: the blend of the hole's
     edge across the first boss cannot end on the block's top face, and OCCT's fillet

@@ -1926,6 +1926,30 @@ def _with_others(shape, edges, vertices, radius, phrase):
         % (tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in others)
 
 
+def _corner_hint(shape, names, own, radius):
+    """For a blend kept as OCCT's: where its selected edges `own` ([(name, Part.Edge)])
+    end at a vertex where another selected edge (of `names`) ends too, and edges there
+    are not selected, with which OCCT's fillet succeeds (_with_others): '; with the
+    edge from ... selected too, the fillets meet at a corner there, which C2Blend
+    fills'; else ''. Where a hole's rim (convex) meets a pocket's floor edge (concave)
+    at the pocket's wall, the vertex's third edge, the hole's wall on the pocket's wall,
+    is convex: the rim's blend cannot be cut back there (its cut curve leaves the
+    surfaces), and with that edge selected the three meet at a filled corner
+    (shapes.hole_through_pocket_wall)."""
+    others = [e for _, e in names if not any(e.isSame(o) for _, o in own)]
+    at = []
+    for _, e in own:
+        for v in e.Vertexes:
+            if any(v.isSame(w) for g in others for w in g.Vertexes) and \
+                    not any(v.isSame(x) for x in at):
+                at.append(v)
+    if not at:
+        return ""
+    return _with_others(shape, [e for _, e in names], at, radius,
+                        "; with %s selected too, the fillets meet at a corner there, "
+                        "which C2Blend fills")
+
+
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),
            tension=1.0, label="Shape", tol_rel=1e-8, samples=32, max_samples=1024,
            bop=True):
@@ -2058,7 +2082,8 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         drop = []
         for b, reason in failed:
             if not any(b is x for x in drop):  # with the other runs of its chain, once
-                kept.append({"where": b.where, "reason": reason})
+                kept.append({"where": b.where, "reason": reason + _corner_hint(
+                    shape, names, selected.get(id(b.source), []), radius)})
                 drop += b.group or [b]
         blended = [b for b in blended if not any(b is x for x in drop)]
     t_assemble = time.perf_counter()
