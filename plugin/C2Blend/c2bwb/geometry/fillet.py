@@ -1930,12 +1930,13 @@ def _corner_hint(shape, names, own, radius):
     """For a blend kept as OCCT's: where its selected edges `own` ([(name, Part.Edge)])
     end at a vertex where another selected edge (of `names`) ends too, and edges there
     are not selected, with which OCCT's fillet succeeds (_with_others): '; with the
-    edge from ... selected too, the fillets meet at a corner there, which C2Blend
-    fills'; else ''. Where a hole's rim (convex) meets a pocket's floor edge (concave)
-    at the pocket's wall, the vertex's third edge, the hole's wall on the pocket's wall,
-    is convex: the rim's blend cannot be cut back there (its cut curve leaves the
-    surfaces), and with that edge selected the three meet at a filled corner
-    (shapes.hole_through_pocket_wall)."""
+    edge from ... selected too, the fillets meet at a corner there instead (OCCT's
+    fillet of them succeeds)'; else ''. Whether C2Blend then fills that corner is not
+    tried (a whole fillet more). Where a hole's rim (convex) meets a pocket's floor
+    edge (concave) at the pocket's wall, the vertex's third edge, the hole's wall on the
+    pocket's wall, is convex: the rim's blend cannot be cut back there (its cut curve
+    leaves the surfaces), and with that edge selected the three meet at a corner, which
+    C2Blend fills (shapes.hole_through_pocket_wall)."""
     others = [e for _, e in names if not any(e.isSame(o) for _, o in own)]
     at = []
     for _, e in own:
@@ -1946,8 +1947,8 @@ def _corner_hint(shape, names, own, radius):
     if not at:
         return ""
     return _with_others(shape, [e for _, e in names], at, radius,
-                        "; with %s selected too, the fillets meet at a corner there, "
-                        "which C2Blend fills")
+                        "; with %s selected too, the fillets meet at a corner there "
+                        "instead (OCCT's fillet of them succeeds)")
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),

@@ -52,8 +52,8 @@ def needs_strips(face):
 
 def strips(face):
     """The pieces of `face` each within half a period of its surface, where it winds
-    round it (needs_strips; else [face]): [Part.Face] with face's orientation, whose areas add
-    up to face's. Raises ValueError saying what failed (a wire whose pcurves leave gaps
+    round it (needs_strips; else [face]): [Part.Face] with face's orientation, whose
+    areas add up to face's. Raises ValueError saying what failed (a wire whose pcurves leave gaps
     wider than SNAP, OCCT's cut of the planar domain, a strip that bounds no valid
     face or whose edges OCCT lays off the surface)."""
     k = winding(face, WINDS)
@@ -143,12 +143,11 @@ def _flat_wire(face, edges, flat):
 def _source(e, flat):
     """Index in `flat` of the planar curve that the planar edge e lies on, or None (it
     lies on a cutting line)."""
-    m = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+    a, b = e.FirstParameter, e.LastParameter
+    m = e.valueAt(0.5 * (a + b))
     for i, g in enumerate(flat):
-        t = e.FirstParameter if g.FirstParameter <= e.FirstParameter <= g.LastParameter \
-            else None
-        if t is not None and (g.value(0.5 * (e.FirstParameter + e.LastParameter)) - m).Length \
-                <= ON:
+        if g.FirstParameter <= a <= g.LastParameter and \
+                (g.value(0.5 * (a + b)) - m).Length <= ON:
             return i
     return None
 
