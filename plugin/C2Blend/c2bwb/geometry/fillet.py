@@ -1926,7 +1926,7 @@ def _with_others(shape, edges, vertices, radius, phrase):
         % (tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in others)
 
 
-def _corner_hint(shape, names, own, radius):
+def _corner_hint(shape, names, own, radius, memo):
     """For a blend kept as OCCT's: where its selected edges `own` ([(name, Part.Edge)])
     end at a vertex where another selected edge (of `names`) ends too, and edges there
     are not selected, with which OCCT's fillet succeeds (_with_others): '; with the
@@ -1936,7 +1936,8 @@ def _corner_hint(shape, names, own, radius):
     edge (concave) at the pocket's wall, the vertex's third edge, the hole's wall on the
     pocket's wall, is convex: the rim's blend cannot be cut back there (its cut curve
     leaves the surfaces), and with that edge selected the three meet at a corner, which
-    C2Blend fills (shapes.hole_through_pocket_wall)."""
+    C2Blend fills (shapes.hole_through_pocket_wall). memo: {vertices: hint}, so that
+    the blends ending at the same vertices try OCCT's fillet once."""
     others = [e for _, e in names if not any(e.isSame(o) for _, o in own)]
     at = []
     for _, e in own:
@@ -1946,9 +1947,12 @@ def _corner_hint(shape, names, own, radius):
                 at.append(v)
     if not at:
         return ""
-    return _with_others(shape, [e for _, e in names], at, radius,
-                        "; with %s selected too, the fillets meet at a corner there "
-                        "instead (OCCT's fillet of them succeeds)")
+    key = tuple(sorted(v.hashCode() for v in at))
+    if key not in memo:
+        memo[key] = _with_others(shape, [e for _, e in names], at, radius,
+                                 "; with %s selected too, the fillets meet at a corner "
+                                 "there instead (OCCT's fillet of them succeeds)")
+    return memo[key]
 
 
 def fillet(shape, edges, radius, continuity="C2", shape_params=(1.0, 1.0, 1.0, 1.0),
@@ -2062,6 +2066,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
             return  # whose findings then explain it first
         measured.update(solid=solid, checks=checks, seconds=time.perf_counter() - t)
 
+    hints = {}  # for _corner_hint
     while True:  # a blend that cannot be cut back or cut into its faces is kept as OCCT's
         filled = [p for p in patches if _at_corner(p, blended)]
         failed = ends.trim(blended, lambda f: _original(shape, f))
@@ -2084,7 +2089,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         for b, reason in failed:
             if not any(b is x for x in drop):  # with the other runs of its chain, once
                 kept.append({"where": b.where, "reason": reason + _corner_hint(
-                    shape, names, selected.get(id(b.source), []), radius)})
+                    shape, names, selected.get(id(b.source), []), radius, hints)})
                 drop += b.group or [b]
         blended = [b for b in blended if not any(b is x for x in drop)]
     t_assemble = time.perf_counter()

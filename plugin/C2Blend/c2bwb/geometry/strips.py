@@ -53,9 +53,9 @@ def needs_strips(face):
 def strips(face):
     """The pieces of `face` each within half a period of its surface, where it winds
     round it (needs_strips; else [face]): [Part.Face] with face's orientation, whose
-    areas add up to face's. Raises ValueError saying what failed (a wire whose pcurves leave gaps
-    wider than SNAP, OCCT's cut of the planar domain, a strip that bounds no valid
-    face or whose edges OCCT lays off the surface)."""
+    areas add up to face's. Raises ValueError saying what failed (a wire whose pcurves
+    leave gaps wider than SNAP, OCCT's cut of the planar domain, a strip that bounds no
+    valid face or whose edges OCCT lays off the surface)."""
     k = winding(face, WINDS)
     if k is None:
         return [face]
@@ -63,15 +63,13 @@ def strips(face):
     period = (s.UPeriod() if k == 0 else s.VPeriod())
     edges, flat = [], []  # the face's edges, and their pcurves as planar edges
     wires = []
-    for w in face.Wires:
+    for w in _wires(face):
         es = list(w.OrderedEdges)
         edges += es
         wires.append(_flat_wire(face, es, flat))
-    outer = next(i for i, w in enumerate(face.Wires) if w.isSame(face.OuterWire))
-    domain = Part.Face(wires[outer])
-    holes = [w for i, w in enumerate(wires) if i != outer]
-    if holes:
-        domain.cutHoles(holes)
+    domain = Part.Face(wires[0])
+    if len(wires) > 1:
+        domain.cutHoles(wires[1:])
     box = domain.BoundBox
     lo, hi = (box.XMin, box.XMax) if k == 0 else (box.YMin, box.YMax)
     a, b = (box.YMin - 1.0, box.YMax + 1.0) if k == 0 else (box.XMin - 1.0, box.XMax + 1.0)
@@ -93,6 +91,11 @@ def strips(face):
     if abs(total - face.Area) > AREA_REL * face.Area:
         raise ValueError("its strips' areas add up to %.6g, not its %.6g" % (total, face.Area))
     return out
+
+
+def _wires(face):
+    """face's wires, its outer wire first."""
+    return [face.OuterWire] + [w for w in face.Wires if not w.isSame(face.OuterWire)]
 
 
 def _cuts(lo, hi, step, at):
@@ -182,8 +185,7 @@ def _laid(surface, k, flat_face, flat, split, orientation, limit):
     Raises ValueError where OCCT's projection leaves an edge further than `limit` off
     the surface."""
     wires = []
-    for w in [flat_face.OuterWire] + [x for x in flat_face.Wires
-                                      if not x.isSame(flat_face.OuterWire)]:
+    for w in _wires(flat_face):
         ordered = list(w.OrderedEdges)
         laid = [None] * len(ordered)
         for n, e in enumerate(ordered):
