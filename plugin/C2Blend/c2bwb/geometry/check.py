@@ -311,4 +311,8 @@ def format_report(rep):
                      % (k["where"], k["reason"]))
     if "solid_check" in rep:
         lines.append("solid: %s" % rep["solid_check"])
+    if "tolerance" in rep:
+        t = rep["tolerance"]
+        lines.append("tolerances: largest vertex %.2g, edge %.2g (OCCT's fillet: %.2g, %.2g)"
+                     % (t["vertex"], t["edge"], t["occt_vertex"], t["occt_edge"]))
     return lines

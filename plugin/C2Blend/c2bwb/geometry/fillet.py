@@ -72,6 +72,11 @@ C0_FINDING = "GeomAbs_C0"  # the BOP check's finding on geometry that is only C0
 # (_c0_unreliable)
 C0_UNRELIABLE = ("BOPAlgo SelfIntersect", "BOPAlgo OperationAborted")
 ON_FACE = 10.0  # an end curve lies on its end face within this many fit tolerances
+# two edges of a face's wire leaving a vertex in directions this close (rad) form a cusp
+# there, whose tolerance may be raised (_tolerate_cusps) up to CUSP_REACH times the
+# shorter edge's length
+CUSP = 1e-3
+CUSP_REACH = 0.05
 
 
 class NotReplaced(Exception):
@@ -1593,7 +1598,73 @@ def _closed(shells, result, where, blended, fuzzy):
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
     old = {e.hashCode() for e in result.Edges}
     _update_tolerances([e for e in solid.Edges if e.hashCode() not in old], fuzzy)
+    _tolerate_cusps(solid)
     return solid
+
+
+def _tolerances(shape):
+    """{"vertex": the largest tolerance of shape's vertices, "edge": of its edges}."""
+    return {"vertex": max(v.Tolerance for v in shape.Vertexes),
+            "edge": max(e.Tolerance for e in shape.Edges)}
+
+
+def _tolerate_cusps(solid):
+    """Raise the tolerance of the vertices at the cusps (_cusps) of each face of `solid`
+    that BRepCheck rejects, together, doubling from 1e-6, until it passes, each up to
+    CUSP_REACH times the shorter of its two edges (else they are left as they were).
+    A concave fillet's end section in the face it ends on is tangent there to that
+    face's edge along the other side, and the face it grows meets itself at that point
+    at a cusp. A G2 blend's section leaves that edge as d^3 (a G1 one as d^2), so it runs
+    within the edges' tolerance of it for a while, and BRepCheck takes the wire for
+    self-intersecting unless the vertex's tolerance covers that stretch. Where the face
+    cuts the fillet at a shallow angle, the section is stretched and the stretch long:
+    the top and bottom faces of the 3-turn helical ridge's cylinder, where the junction
+    climbs at 0.064 (pitch 4 on a circumference of 62.8), needed 5e-3 (R = 0.3; OCCT's
+    own G1 fillet there has 1.1e-4)."""
+    if solid.isValid():
+        return
+    for f in solid.Faces:
+        if f.isValid():
+            continue
+        cusps = _cusps(f)
+        start = [v.Tolerance for v, _ in cusps]
+        t = 1e-6
+        while cusps and not f.isValid() and any(t < cap for _, cap in cusps):
+            t *= 2.0
+            for (v, cap), t0 in zip(cusps, start):
+                if min(t, cap) > t0:
+                    v.fixTolerance(min(t, cap))
+        if not f.isValid():
+            for (v, _), t0 in zip(cusps, start):
+                v.fixTolerance(t0)
+
+
+def _cusps(face):
+    """[(vertex, largest tolerance allowed there)] for each vertex of face's wires where
+    two consecutive edges leave it in directions within CUSP of each other."""
+    out = []
+    for w in face.Wires:
+        es = [e for e in w.OrderedEdges if not e.Degenerated]
+        for a, b in zip(es, es[1:] + es[:1]):
+            shared = [v for v in a.Vertexes if any(v.isSame(x) for x in b.Vertexes)]
+            if len(shared) != 1 or a.isSame(b):
+                continue
+            v = shared[0]
+            try:
+                da, db = _leaving(a, v.Point), _leaving(b, v.Point)
+            except Exception:  # noqa: BLE001 - OCCT's: no tangent there, no cusp found
+                continue
+            if da.getAngle(db) < CUSP:
+                out.append((v, CUSP_REACH * min(a.Length, b.Length)))
+    return out
+
+
+def _leaving(edge, point):
+    """The unit tangent of edge at its end at `point`, pointing into the edge."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    first = (edge.valueAt(a) - point).Length <= (edge.valueAt(b) - point).Length
+    d = edge.tangentAt(a if first else b)
+    return d if first else -d
 
 
 def _sewn(faces):
@@ -2112,6 +2183,8 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         "solid_check": solid_check,
         **measured["checks"],
         "volume": solid.Volume, "occt_volume": result.Volume,
+        "tolerance": {**_tolerances(solid), **{"occt_" + k: x for k, x
+                                               in _tolerances(result).items()}},
         "seconds": time.perf_counter() - t0, "occt_seconds": t_occt,
         # the continuity check overlaps OCCT's BOP check (in another process): the
         # stages count that time once, in continuity_check

@@ -121,6 +121,8 @@ def fillet_each(parts, names, label, fillet_one, check_one):
         "solid %d: %s" % (i + 1, rep["solid_check"]) for i, rep in reports)
     untouched = sum(s.Volume for i, s in enumerate(solids) if i not in dict(reports))
     merged["volume"] = result.Volume
+    merged["tolerance"] = {k: max(rep["tolerance"][k] for _, rep in reports)
+                           for k in first["tolerance"]}
     merged["occt_volume"] = untouched + sum(rep["occt_volume"] for _, rep in reports)
     merged["occt_seconds"] = sum(rep["occt_seconds"] for _, rep in reports)
     merged["stage_seconds"] = {k: sum(rep["stage_seconds"][k] for _, rep in reports)

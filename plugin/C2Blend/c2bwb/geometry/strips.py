@@ -19,6 +19,13 @@ cross them, so that they keep their vertices, whose tolerance covers gaps betwee
 pcurves: 5.7e-5 where the 3-turn ridge's junction meets the top face) and by edges
 along the surface's iso-curves between the points where the lines cross those edges.
 The strips are cut as any face is, and the pieces kept are merged again.
+
+OCCT lays the pieces of the face's edges on the surface by projection. Its pcurve of
+one may follow the edge's 3D curve closely but at other parameters (the 3-turn ridge's
+junction between u = pi and 2 pi: 1.4e-8 off the curve, 1.8e-3 off at equal
+parameters, so its tolerance became 2.4e-3). Such a piece is made again on the face's
+own pcurve of its edge, restricted to the piece (whose 3D curve OCCT then computes from
+it: within the edge's tolerance of the original).
 """
 
 import FreeCAD
@@ -29,14 +36,13 @@ from .surface import winding
 WINDS = 1e-3  # a face winds round its surface where it spans more than 1 + WINDS periods
 EPS = 1e-6  # of a period: a cut this close to a domain's end would leave a sliver
 SNAP = 1e-4  # largest gap, in the parameter plane, closed between a wire's pcurves
-# a strip's edges, laid on the surface by OCCT's projection, may come this many times
-# further off it than the face's own edges: the projection cannot always tell which end
-# of the period an edge ending on the surface's seam belongs to (the helical ridge's
-# cylinder face with 3 turns: a half turn of its junction came 2.4e-3 off, and the
-# strips are then refused)
+# a strip's edges, laid on the surface by OCCT's projection, or made again on the face's
+# pcurves where that projection is off (see the module), may come this many times
+# further off it than the face's own edges; else the strips are refused
 LAID_TOL = 10.0
 ISO_NODES = 16  # intervals of the interpolation of a curved iso-curve edge
-ON = 1e-9  # a planar piece's edge lies on a pcurve or line within this
+ON = 1e-9  # a planar piece's edge lies on a pcurve or line within this; a strip's edge
+# ends where a piece of the face's own edges does within this
 # the strips' areas add up to the face's within this: OCCT's own area of a face is no
 # closer (the 3-turn ridge's cylinder face: 462.838, 8.6e-4 over the closed form's
 # 462.442, the band between two helices 2.4 apart in z on a cylinder r = 10, cut by the
@@ -86,7 +92,8 @@ def strips(face):
         raise ValueError("its domain's strips do not make it up")
     limit = LAID_TOL * max([1e-7] + [e.Tolerance for e in edges])
     split = _split_edges(edges, flat, pieces)
-    out = [_laid(s, k, f, flat, split, face.Orientation, limit) for f in pieces]
+    pcurves = [face.curveOnSurface(e)[0] for e in edges]
+    out = [_laid(s, k, f, flat, split, pcurves, face.Orientation, limit) for f in pieces]
     total = sum(f.Area for f in out)
     if abs(total - face.Area) > AREA_REL * face.Area:
         raise ValueError("its strips' areas add up to %.6g, not its %.6g" % (total, face.Area))
@@ -177,39 +184,62 @@ def _split_edges(edges, flat, pieces):
     return out
 
 
-def _laid(surface, k, flat_face, flat, split, orientation, limit):
+def _laid(surface, k, flat_face, flat, split, pcurves, orientation, limit):
     """The face on `surface` whose domain is the planar face `flat_face` (u, v as x, y;
     k: 0 where u winds, 1 where v does): bounded by the pieces (split) of the original
     face's edges where flat_face's edges lie on their pcurves (flat), and by edges along
     the surface's iso-curves elsewhere (the cutting lines, _along), with `orientation`.
-    Raises ValueError where OCCT's projection leaves an edge further than `limit` off
-    the surface."""
-    wires = []
+    A piece that OCCT's projection lays further than `limit` off the surface is made
+    again on its edge's pcurve (pcurves: the face's, by edge index), and the face with
+    it. Raises ValueError where the face is not valid, or an edge stays further than
+    `limit` off the surface."""
+    wires = []  # per wire: [(key of split or None, edge)]
     for w in _wires(flat_face):
         ordered = list(w.OrderedEdges)
-        laid = [None] * len(ordered)
-        for n, e in enumerate(ordered):
-            i = _source(e, flat)
-            if i is not None:
-                laid[n] = split[(i, e.FirstParameter, e.LastParameter)]
-        ends = [x.Vertexes[0].Point for x in laid if x is not None] + \
-            [x.Vertexes[-1].Point for x in laid if x is not None]
-        for n, e in enumerate(ordered):
-            if laid[n] is None:
-                laid[n] = _along(surface, k, e, ends)
-        wires.append(Part.Wire([x for x in laid if x is not None]))
-    out = Part.Face(surface, wires[0])
-    if len(wires) > 1:
-        out.cutHoles(wires[1:])
-    out.validate()
-    if not out.isValid():
-        raise ValueError("a strip of it bounds no valid face")
+        keys = [_source(e, flat) for e in ordered]
+        keys = [None if i is None else (i, e.FirstParameter, e.LastParameter)
+                for i, e in zip(keys, ordered)]
+        ends = [v.Point for key in keys if key is not None for v in split[key].Vertexes]
+        wires.append([(key, split[key] if key is not None else _along(surface, k, e, ends))
+                      for key, e in zip(keys, ordered)])
+    out = _bounded(surface, wires)
+    off = [e for e in out.Edges if e.Tolerance > limit]
+    if off:
+        def remade(key, e):
+            if key is None or not any(_same_ends(e, x) for x in off):
+                return e
+            i, t0, t1 = key
+            return pcurves[i].toShape(surface, t0, t1)
+        out = _bounded(surface, [[(key, remade(key, e)) for key, e in w] for w in wires])
     worst = max(e.Tolerance for e in out.Edges)
     if worst > limit:
         raise ValueError("an edge of a strip of it lies %.2g off its surface (laid on it "
                          "by projection)" % worst)
     out.Orientation = orientation
     return out
+
+
+def _bounded(surface, wires):
+    """The valid face on `surface` bounded by `wires` ([(key, edge or None)], the outer
+    wire first), its edges' pcurves projected by OCCT where they have none on it.
+    Raises ValueError where it is not valid."""
+    made = [Part.Wire([e for _, e in w if e is not None]) for w in wires]
+    out = Part.Face(surface, made[0])
+    if len(made) > 1:
+        out.cutHoles(made[1:])
+    out.validate()
+    if not out.isValid():
+        raise ValueError("a strip of it bounds no valid face")
+    return out
+
+
+def _same_ends(a, b):
+    """True where edges a and b end at the same points (either way round), to 1e-9."""
+    p, q = [v.Point for v in a.Vertexes], [v.Point for v in b.Vertexes]
+    if len(p) != len(q):
+        return False
+    return all((x - y).Length <= ON for x, y in zip(p, q)) or \
+        all((x - y).Length <= ON for x, y in zip(p, reversed(q)))
 
 
 def _along(surface, k, e, ends):
