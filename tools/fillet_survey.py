@@ -168,7 +168,7 @@ def parts():
     sc, corners = shapes.square_to_circle_loft()
     out.append(("square-to-circle loft, its corner lines (tangent at the circle)", sc,
                 corners, 0.5))
-    for turns in (1, 1.5, 2, 3):
+    for turns in (1, 1.5, 2, 2.5, 3):
         hr, edges = shapes.helical_ridge(turns)
         out.append(("helical ridge on a cylinder, %g turn(s)" % turns, hr.copy(), edges, 0.3))
     pair = Part.makeCompound([b, Part.makeBox(10, 10, 10, V(20, 0, 0))])

@@ -744,7 +744,11 @@ def _cut_face(face, tools, sharp, legs, tol):
     cut is made again with the closed tools _restarted where they cross the face's
     seam, then half a period on, then with the tools' ends _snapped_to_seams. A face
     that winds round its surface is first cut strip by strip (_fused), and its pieces
-    kept are merged again (strips.merged)."""
+    kept are merged again (strips.merged). A cut that makes a piece BRepCheck rejects
+    is tried the next way too, and taken only where none does better: the tube of a
+    helical ridge of 2.5 turns, rebased, was cut into a piece of 402.2 mm2 that is not
+    valid, which OCCT's distance put on the junction's edges, so it was dropped and the
+    sewing left free edges; as it is, it is cut into three valid pieces."""
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
     areas = {}
@@ -765,13 +769,18 @@ def _cut_face(face, tools, sharp, legs, tol):
                 if any(a is not b for a, b in zip(cut, tools)):
                     yield f, cut, False
 
-    pieces, in_strips = None, False
+    pieces, in_strips, rejected = None, False, None
     for f, cut, in_strips in attempts():
         again = _fused(f, cut, tol, areas, in_strips)
+        if not isinstance(again, str) and not all(p.isValid() for p in again):
+            rejected = rejected or (again, in_strips)
+            again = "OCCT's general fuse made a piece of it that BRepCheck rejects"
         if pieces is None or not isinstance(again, str):
             pieces = again  # the first failure is the one to report
         if not isinstance(again, str):
             break
+    if isinstance(pieces, str) and rejected:
+        pieces, in_strips = rejected  # sewing may yet mend them, as before
     if isinstance(pieces, str):
         raise ValueError(pieces)
 
@@ -1619,7 +1628,7 @@ def _tolerate_cusps(solid):
     self-intersecting unless the vertex's tolerance covers that stretch. Where the face
     cuts the fillet at a shallow angle, the section is stretched and the stretch long:
     the top and bottom faces of the 3-turn helical ridge's cylinder, where the junction
-    climbs at 0.064 (pitch 4 on a circumference of 62.8), needed 5e-3 (R = 0.3; OCCT's
+    climbs at 0.064 (pitch 4 on a circumference of 62.8), needed 4.1e-3 (R = 0.3; OCCT's
     own G1 fillet there has 1.1e-4)."""
     if solid.isValid():
         return
