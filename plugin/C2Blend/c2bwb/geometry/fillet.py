@@ -2123,7 +2123,8 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                 v = min(shape.Vertexes, key=lambda x: chain.faces[0].distToShape(x)[0])
                 reason += _with_others(shape, [e for _, e in names], [v], radius,
                                        "; with %s selected too, the fillets meet at a "
-                                       "corner there, which C2Blend fills")
+                                       "corner there instead (OCCT's fillet of them "
+                                       "succeeds)")
             kept.append({"where": where, "reason": reason})
             continue
         try:
