@@ -1159,8 +1159,12 @@ def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts(monkeypatch):
                                          .Volume, rel=1e-12)
     (kept,) = rep["kept_occt_faces"]
     assert kept["where"] == ", ".join("Tee.%s" % e for e in names)
-    assert re.fullmatch(r"the solid sewn with its blend is not valid: BRepCheck rejects "
-                        r"face Face\d+ of the filleted solid", kept["reason"]), kept
+    m = re.fullmatch(r"the solid sewn with its blend is not valid: BRepCheck rejects "
+                     r"face Face\d+ of the filleted solid, on (Face\d+) of the input",
+                     kept["reason"])
+    assert m, kept
+    cut = s.getElement(m.group(1))  # the big pipe's face, cut along the trimline
+    assert isinstance(cut.Surface, Part.Cylinder) and cut.Surface.Radius == pytest.approx(6.0)
 
 
 def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
@@ -3426,6 +3430,32 @@ def test_the_junction_of_a_helical_ridge_is_g2(turns, check):
     assert rep["tolerance"]["vertex"] == max(v.Tolerance for v in solid.Vertexes) < 1e-2
     assert rep["tolerance"]["edge"] == max(e.Tolerance for e in solid.Edges) < 1e-4
     _assert_clear_of_ridge(solid, turns, 1.05)
+
+
+def test_faces_meeting_themselves_at_a_cusp_are_rejected_unless_its_tolerance_grows(
+        monkeypatch):
+    """The ridge of 1.5 turns at R = 0.3 with fl._tolerate_cusps allowed no growth
+    (CUSP_REACH 0): BRepCheck rejects the cylinder's top and bottom faces, each grown
+    at a fillet's end to a cusp where the end section touches the ridge's outline, and
+    both fillets are kept as OCCT's. The reason names the faces of the filleted solid
+    (not returned) and the input's faces they lie on: the planes z = 0 and z = 6. With
+    the growth allowed, the same junction is G2 (test_the_junction_of_a_helical_ridge_
+    is_g2)."""
+    monkeypatch.setattr(fl, "CUSP_REACH", 0.0)
+    s, edges = shapes.helical_ridge(1.5)
+    solid, rep = C2Blend.fillet_report(s, edges, 0.3)
+    assert_valid(solid)
+    kept = rep["kept_occt_faces"]
+    assert len(kept) == 2 and not rep["blends"]
+    for k in kept:
+        m = re.fullmatch(r"the solid sewn with its blend is not valid: BRepCheck rejects "
+                         r"face Face\d+ of the filleted solid, on (Face\d+) of the input, "
+                         r"face Face\d+ of the filleted solid, on (Face\d+) of the input",
+                         k["reason"])
+        assert m, k
+        planes = [s.getElement(g) for g in m.groups()]
+        assert all(isinstance(f.Surface, Part.Plane) for f in planes)
+        assert sorted(round(f.BoundBox.ZMin, 9) for f in planes) == [0.0, 6.0]
 
 
 def test_cusps_are_found_where_a_face_s_edges_leave_a_vertex_the_same_way():

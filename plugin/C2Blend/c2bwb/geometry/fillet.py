@@ -1345,7 +1345,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     if inherited:
         problems, line = None, inherited
     blocks = orig if not c0_input else None
-    rejected = _rejected_faces(solid, blended, fills) if problems else []
+    rejected = _rejected_faces(solid, blended, fills, shape) if problems else []
     if rejected:
         # FreeCAD's message then lists its faces' own statuses ("No error"), not those
         # in their context that failed
@@ -1403,12 +1403,14 @@ def _occt_pieces(result, touched, skip, tol):
     return None
 
 
-def _rejected_faces(solid, blended, fills):
+def _rejected_faces(solid, blended, fills, shape=None):
     """The faces of `solid` that BRepCheck rejects (in their own context: edges and
     pcurves that do not fit their surface, wires that do not close), each as (what it
     is, for messages: 'the blend face of ...', 'the plate filling of ...' or 'face
-    FaceN of ...'; the blends of `blended` it belongs to: the blend whose face it is,
-    those ending at the corner it fills, or those sharing an edge with it)."""
+    FaceN of the filleted solid', followed by ', on FaceM of the input' where `shape`,
+    the input solid, is given, since the filleted solid is not returned then; the
+    blends of `blended` it belongs to: the blend whose face it is, those ending at the
+    corner it fills, or those sharing an edge with it)."""
     out = []
     mine = [(b, _find_face(solid, b)) for b in blended]
     for f in solid.Faces:
@@ -1422,7 +1424,10 @@ def _rejected_faces(solid, blended, fills):
             out.append(("the plate filling of the %s" % fill.patch.where(),
                         _at_corner(fill.patch, blended)))
         else:
-            out.append(("face %s of the filleted solid" % ck.element_name(solid, f, "Face"),
+            on = "" if shape is None else ", on %s of the input" % ck.element_name(
+                shape, _original(shape, f), "Face")
+            out.append(("face %s of the filleted solid%s" % (ck.element_name(solid, f, "Face"),
+                                                            on),
                         [b for b, g in mine
                          if any(e.isSame(x) for e in g.Edges for x in f.Edges)]))
     return out
