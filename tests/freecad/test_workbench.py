@@ -3415,10 +3415,13 @@ def test_the_junction_of_a_helical_ridge_is_g2(turns, check):
     At 1.5 and 3 turns the top and bottom faces meet themselves at a cusp where a
     fillet's end section touches the ridge's outline: BRepCheck rejected them until
     fl._tolerate_cusps raised the tolerance of those vertices (4.1e-3 at 3 turns; the
-    report gives the solid's largest tolerances beside OCCT's)."""
+    report gives the solid's largest tolerances beside OCCT's); the input's own
+    tolerances are left as they were."""
     s, edges = shapes.helical_ridge(turns)
     assert len(edges) == (6 if turns > 2 else 4)
+    before = [(v.Tolerance, e.Tolerance) for v, e in zip(s.Vertexes, s.Edges)]
     solid, rep = C2Blend.fillet_report(s, edges, 0.3)
+    assert [(v.Tolerance, e.Tolerance) for v, e in zip(s.Vertexes, s.Edges)] == before
     assert solid.isValid()
     assert rep["kept_occt_faces"] == []
     assert len(rep["blends"]) >= 2  # a fillet on each side of the ridge

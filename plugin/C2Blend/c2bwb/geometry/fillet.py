@@ -1612,7 +1612,7 @@ def _closed(shells, result, where, blended, fuzzy):
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
     old = {e.hashCode() for e in result.Edges}
     _update_tolerances([e for e in solid.Edges if e.hashCode() not in old], fuzzy)
-    _tolerate_cusps(solid)
+    _tolerate_cusps(solid, {v.hashCode() for v in result.Vertexes})
     return solid
 
 
@@ -1622,10 +1622,12 @@ def _tolerances(shape):
             "edge": max(e.Tolerance for e in shape.Edges)}
 
 
-def _tolerate_cusps(solid):
+def _tolerate_cusps(solid, keep=frozenset()):
     """Raise the tolerance of the vertices at the cusps (_cusps) of each face of `solid`
     that BRepCheck rejects, together, doubling from 1e-6, until it passes, each up to
     CUSP_REACH times the shorter of its two edges (else they are left as they were).
+    Vertices whose hashCode is in `keep` (OCCT's result's, which it shares with the
+    input) are left alone: the input is not modified.
     A concave fillet's end section in the face it ends on is tangent there to that
     face's edge along the other side, and the face it grows meets itself at that point
     at a cusp. A G2 blend's section leaves that edge as d^3 (a G1 one as d^2), so it runs
@@ -1640,7 +1642,7 @@ def _tolerate_cusps(solid):
     for f in solid.Faces:
         if f.isValid():
             continue
-        cusps = _cusps(f)
+        cusps = [(v, cap) for v, cap in _cusps(f) if v.hashCode() not in keep]
         start = [v.Tolerance for v, _ in cusps]
         t = 1e-6
         while cusps and not f.isValid() and any(t < cap for _, cap in cusps):
