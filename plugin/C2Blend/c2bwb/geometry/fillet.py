@@ -77,6 +77,10 @@ ON_FACE = 10.0  # an end curve lies on its end face within this many fit toleran
 # shorter edge's length
 CUSP = 1e-3
 CUSP_REACH = 0.05
+# the end of a kept blend's reason naming the unselected edges that would make its
+# vertex a corner (_with_others: OCCT's fillet succeeds with them)
+CORNER_HINT = ("; with %s selected too, the fillets meet at a corner there instead "
+               "(OCCT's fillet of them succeeds)")
 
 
 class NotReplaced(Exception):
@@ -2036,9 +2040,7 @@ def _corner_hint(shape, names, own, radius, memo):
         return ""
     key = tuple(sorted(v.hashCode() for v in at))
     if key not in memo:
-        memo[key] = _with_others(shape, [e for _, e in names], at, radius,
-                                 "; with %s selected too, the fillets meet at a corner "
-                                 "there instead (OCCT's fillet of them succeeds)")
+        memo[key] = _with_others(shape, [e for _, e in names], at, radius, CORNER_HINT)
     return memo[key]
 
 
@@ -2129,9 +2131,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                 # the vertex it stands for: the solid's vertex nearest to it
                 v = min(shape.Vertexes, key=lambda x: chain.faces[0].distToShape(x)[0])
                 reason += _with_others(shape, [e for _, e in names], [v], radius,
-                                       "; with %s selected too, the fillets meet at a "
-                                       "corner there instead (OCCT's fillet of them "
-                                       "succeeds)")
+                                       CORNER_HINT)
             kept.append({"where": where, "reason": reason})
             continue
         try:

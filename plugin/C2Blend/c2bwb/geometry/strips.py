@@ -67,12 +67,16 @@ def strips(face):
         return [face]
     s = face.Surface
     period = (s.UPeriod() if k == 0 else s.VPeriod())
-    edges, flat = [], []  # the face's edges, and their pcurves as planar edges
+    # the face's edges, their pcurves on it ((curve, first, last)), and those pcurves as
+    # planar edges
+    edges, pcurves, flat = [], [], []
     wires = []
     for w in _wires(face):
         es = list(w.OrderedEdges)
+        pcs = [face.curveOnSurface(e)[:3] for e in es]
         edges += es
-        wires.append(_flat_wire(face, es, flat))
+        pcurves += pcs
+        wires.append(_flat_wire(es, pcs, flat))
     domain = Part.Face(wires[0])
     if len(wires) > 1:
         domain.cutHoles(wires[1:])
@@ -92,7 +96,6 @@ def strips(face):
         raise ValueError("its domain's strips do not make it up")
     limit = LAID_TOL * max([1e-7] + [e.Tolerance for e in edges])
     split = _split_edges(edges, flat, pieces)
-    pcurves = [face.curveOnSurface(e)[0] for e in edges]
     out = [_laid(s, k, f, flat, split, pcurves, face.Orientation, limit) for f in pieces]
     total = sum(f.Area for f in out)
     if abs(total - face.Area) > AREA_REL * face.Area:
@@ -118,14 +121,14 @@ def _cuts(lo, hi, step, at):
     return out
 
 
-def _flat_wire(face, edges, flat):
-    """The wire of face's `edges` (in order) as a closed wire in the plane z = 0 of their
-    pcurves on face (u, v as x, y; each with its edge's parameters), gaps between
-    consecutive pcurves (up to SNAP; the face's tolerance allows them) closed by moving
-    their ends together. Appends each planar curve to `flat`."""
+def _flat_wire(edges, pcurves, flat):
+    """The wire of a face's `edges` (in order) as a closed wire in the plane z = 0 of
+    their `pcurves` on the face ((curve, first, last) per edge; u, v as x, y, each with
+    its edge's parameters), gaps between consecutive pcurves (up to SNAP; the face's
+    tolerance allows them) closed by moving their ends together. Appends each planar
+    curve to `flat`."""
     curves = []
-    for e in edges:
-        c2d, a, b = face.curveOnSurface(e)[:3]
+    for e, (c2d, a, b) in zip(edges, pcurves):
         curves.append((c2d.toBSpline(a, b), e.Orientation == "Reversed"))
     for (c, rc), (d, rd) in zip(curves, curves[1:] + curves[:1]):
         i, j = (1 if rc else c.NbPoles), (d.NbPoles if rd else 1)  # c's end, d's start
@@ -190,7 +193,8 @@ def _laid(surface, k, flat_face, flat, split, pcurves, orientation, limit):
     face's edges where flat_face's edges lie on their pcurves (flat), and by edges along
     the surface's iso-curves elsewhere (the cutting lines, _along), with `orientation`.
     A piece that OCCT's projection lays further than `limit` off the surface is made
-    again on its edge's pcurve (pcurves: the face's, by edge index), and the face with
+    again on its edge's pcurve (pcurves: the face's, (curve, first, last) by edge
+    index), and the face with
     it. Raises ValueError where the face is not valid, or an edge stays further than
     `limit` off the surface."""
     wires = []  # per wire: [(key of split or None, edge)]
@@ -209,7 +213,7 @@ def _laid(surface, k, flat_face, flat, split, pcurves, orientation, limit):
             if key is None or not any(_same_ends(e, x) for x in off):
                 return e
             i, t0, t1 = key
-            return pcurves[i].toShape(surface, t0, t1)
+            return pcurves[i][0].toShape(surface, t0, t1)
         out = _bounded(surface, [[(key, remade(key, e)) for key, e in w] for w in wires])
     worst = max(e.Tolerance for e in out.Edges)
     if worst > limit:
