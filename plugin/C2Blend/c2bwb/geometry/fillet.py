@@ -77,6 +77,7 @@ ON_FACE = 10.0  # an end curve lies on its end face within this many fit toleran
 # shorter edge's length
 CUSP = 1e-3
 CUSP_REACH = 0.05
+CUSP_BISECTIONS = 4  # of the doubling's last step: the least tolerance found to 2^(1/16)
 # the end of a kept blend's reason naming the unselected edges that would make its
 # vertex a corner (_with_others: OCCT's fillet succeeds with them)
 CORNER_HINT = ("; with %s selected too, the fillets meet at a corner there instead "
@@ -1628,8 +1629,9 @@ def _tolerances(shape):
 
 def _tolerate_cusps(solid, keep=frozenset()):
     """Raise the tolerance of the vertices at the cusps (_cusps) of each face of `solid`
-    that BRepCheck rejects, together, doubling from 1e-6, until it passes, each up to
-    CUSP_REACH times the shorter of its two edges (else they are left as they were).
+    that BRepCheck rejects, together, doubling from 1e-6 until it passes, then bisecting
+    the last step for the least that does (CUSP_BISECTIONS), each up to CUSP_REACH times
+    the shorter of its two edges (else they are left as they were).
     Vertices whose hashCode is in `keep` (OCCT's result's, which it shares with the
     input) are left alone: the input is not modified.
     A concave fillet's end section in the face it ends on is tangent there to that
@@ -1639,8 +1641,8 @@ def _tolerate_cusps(solid, keep=frozenset()):
     self-intersecting unless the vertex's tolerance covers that stretch. Where the face
     cuts the fillet at a shallow angle, the section is stretched and the stretch long:
     the top and bottom faces of the 3-turn helical ridge's cylinder, where the junction
-    climbs at 0.064 (pitch 4 on a circumference of 62.8), needed 4.1e-3 (R = 0.3; OCCT's
-    own G1 fillet there has 1.1e-4)."""
+    climbs at 0.064 (pitch 4 on a circumference of 62.8), need 2.5e-3 (R = 0.3; OCCT's
+    own G1 fillet there has 1.1e-4 to 1.3e-4; the doubling alone gave 4.1e-3)."""
     if solid.isValid():
         return
     for f in solid.Faces:
@@ -1648,15 +1650,22 @@ def _tolerate_cusps(solid, keep=frozenset()):
             continue
         cusps = [(v, cap) for v, cap in _cusps(f) if v.hashCode() not in keep]
         start = [v.Tolerance for v, _ in cusps]
+
+        def passes(t):  # with the cusps' tolerances t (within their caps), or as they were
+            for (v, cap), t0 in zip(cusps, start):
+                v.fixTolerance(max(min(t, cap), t0))
+            return f.isValid()
         t = 1e-6
         while cusps and not f.isValid() and any(t < cap for _, cap in cusps):
             t *= 2.0
-            for (v, cap), t0 in zip(cusps, start):
-                if min(t, cap) > t0:
-                    v.fixTolerance(min(t, cap))
+            if passes(t):  # the least that passes, to 2^(1/16), between t / 2 and t
+                lo = 0.5 * t
+                for _ in range(CUSP_BISECTIONS):
+                    mid = math.sqrt(lo * t)
+                    lo, t = (lo, mid) if passes(mid) else (mid, t)
+                passes(t)
         if not f.isValid():
-            for (v, _), t0 in zip(cusps, start):
-                v.fixTolerance(t0)
+            passes(0.0)
 
 
 def _cusps(face):
