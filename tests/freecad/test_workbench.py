@@ -1009,28 +1009,70 @@ def test_edges_on_which_occt_fails_together_are_named():
     assert sorted(m.groups()[2:]) == sorted(_from_to(e) for e in third)
 
 
-def test_a_vertex_of_a_concave_and_a_convex_fillet_names_its_third_edge():
-    """The step's concave edge and one convex edge rising from its end: OCCT puts a face
-    between the two fillets at their vertex, meeting them at an angle, and they are kept
-    as OCCT's. The reason names the third edge at that vertex (the lower block's top
-    edge from x = 15 to 30); selected too, the three fillets meet at a corner, which is
-    filled: every fillet blended, every trimline G2."""
+def _assert_set_back(solid, rep, radius, p0, along_rim, along_trimline, out):
+    """A setback corner (setback.py) where a concave fillet's trimline on the wall W
+    reaches W's rim, left sharp, at p0: W's rim (direction along_rim from p0) and that
+    trimline (along_trimline, down W from p0) end at the points a radius from p0, which
+    the filling's crease on W joins; the filling meets its blends and the top face T
+    within corners.MAX_SEAM, and it does not rise above T by more than twice its
+    seams' gap (out: T's outward normal, p0 lies on T). Every trimline is G2 and no
+    fillet is kept."""
+    assert_valid(solid)
+    assert [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")] == []
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    (corner,) = [c for c in rep["corner_patches"] if "crease" in c]
+    assert corner["crease"]["edges"] == 1 and corner["g1"] < fl.cn.MAX_SEAM
+    a, b = p0 + along_rim * radius, p0 + along_trimline * radius
+    assert min((v.Point - a).Length for v in solid.Vertexes) < 1e-6
+    assert min((v.Point - b).Length for v in solid.Vertexes) < 1e-6
+    wall = solid.getElement(corner["crease"]["face"])
+    assert isinstance(wall.Surface, Part.Plane)
+    assert all(wall.distToShape(Part.Vertex(p))[0] < 1e-7 for p in (a, b))
+    fill = solid.getElement(corner["face"])
+    points, _ = fill.tessellate(1e-3 * radius)
+    assert max((p - p0).dot(out) for p in points) < 2 * corner["g0"] + 1e-7, corner
+
+
+def test_a_vertex_of_a_concave_and_a_convex_fillet_is_set_back(monkeypatch):
+    """The step's concave edge (x = 15, z = 10) and the convex edge rising from its end
+    at y = 0: the third edge at their vertex, the lower block's top edge at y = 0, is
+    not selected. OCCT puts a face between the two fillets there, meeting them at an
+    angle and vanishing where the concave fillet's trimline on the lower top reaches
+    that edge, at (15 + R, 0, 10). The corner is set back by R along that edge and
+    along that trimline, and filled: every trimline G2, nothing kept (_assert_set_back,
+    the front face y = 0 as the top). Selected too, the third edge makes it a corner
+    of three fillets, filled (4 edges). Without the setback (fl.sb.Setback failing),
+    both fillets are kept with OCCT's face between them, whose reason names that third
+    edge."""
     s, concave, _ = shapes.step()
     (rising, _), (third, _) = _step_vertex_edges(s)  # those at y = 0
-    solid, rep = C2Blend.fillet_report(s, [concave, rising], 1.0, label="Step")
-    assert_valid(solid)
-    assert not rep["blends"] and rep["verdict"] == "G1"
-    (between,) = [k for k in rep["kept_occt_faces"] if k["where"].startswith("Step, OCCT's")]
-    assert between["reason"].endswith(
-        "; with the edge from %s selected too, the fillets meet at a corner there instead "
-        "(OCCT's fillet of them succeeds)" % _from_to(third)), between
+    for r in (0.5, 1.0):
+        solid, rep = C2Blend.fillet_report(s, [concave, rising], r, label="Step")
+        assert len(rep["blends"]) == 2
+        _assert_set_back(solid, rep, r, V(15 + r, 0, 10), V(1, 0, 0), V(0, 1, 0),
+                         V(0, -1, 0))
     solid, rep = C2Blend.fillet_report(
         s, [concave, rising, ck.element_name(s, third, "Edge")], 1.0, label="Step")
     assert_valid(solid)
     assert not rep["kept_occt_faces"] and len(rep["blends"]) == 3
     assert all(t["verdict"] == "G2" for t in rep["trimlines"])
     (corner,) = rep["corner_patches"]
-    assert corner["edges"] == 4 and corner["g1"] < fl.cn.MAX_SEAM
+    assert corner["edges"] == 4 and corner["g1"] < fl.cn.MAX_SEAM and "crease" not in corner
+
+    def fails(*args):
+        raise ValueError("injected")
+    monkeypatch.setattr(fl.sb, "Setback", fails)
+    solid, rep = C2Blend.fillet_report(s, [concave, rising], 1.0, label="Step")
+    assert_valid(solid)
+    assert not rep["blends"] and rep["verdict"] == "G1"
+    (between,) = [k for k in rep["kept_occt_faces"] if k["where"].startswith("Step, OCCT's")]
+    assert between["reason"].startswith(
+        "it is OCCT's face between 2 fillets at a vertex, which it meets at an angle, not "
+        "tangent: no corner patch that a filling replaces, so the fillets there are kept "
+        "with it (it cannot be set back: injected)")
+    assert between["reason"].endswith(
+        "; with the edge from %s selected too, the fillets meet at a corner there instead "
+        "(OCCT's fillet of them succeeds)" % _from_to(third)), between
 
 
 def test_an_edge_on_which_occt_fails_alone_is_named(monkeypatch):
@@ -1555,21 +1597,19 @@ def test_a_corner_of_two_concave_fillets_and_a_convex_one():
     assert [f[0].distToShape(inside)[0] < 1e-9 for f in floors] == [True, True, False]
 
 
-def test_a_convex_and_a_concave_fillet_at_a_vertex_are_kept_with_the_reason():
-    """A rib flush with the plate's side: the plate's top edge (convex) and the rib's foot
-    (concave) meet at a vertex whose third edge is not filleted. OCCT joins the two
-    fillets with a face that meets both at an angle (a crease of 0.03 to 0.1 rad), not a
-    corner patch a plate filling could replace. Both fillets are kept, and the report
-    names that face by its position and says why (it once named every selected edge)."""
+def test_a_rib_flush_with_a_plate_s_side_is_set_back_where_its_foot_meets_the_top_edge():
+    """A rib flush with the plate's side y = 40: the plate's top edge there (convex) and
+    the rib's foot at x = 28 (concave) meet at a vertex whose third edge, the rib's
+    vertical edge on that side, is not filleted. OCCT joins the two fillets with a face
+    that meets both at an angle (a crease of 0.03 to 0.1 rad) and vanishes where the
+    foot's trimline on the rib's wall, z = 8 + R, reaches that edge. Both are G2
+    blends, set back by R up the rib's edge and along that trimline from (28, 40,
+    8 + R), the side y = 40 as the top (_assert_set_back)."""
     s, edges = shapes.flush_rib()
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Rib")
-    assert solid.isValid() and not rep["blends"]
-    reasons = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
-    face = [w for w in reasons if w.startswith("Rib, OCCT's face at (")]
-    assert len(face) == 1 and reasons[face[0]].startswith(
-        "it is OCCT's face between 2 fillets at a vertex, which it meets at an angle")
-    assert {"Rib.%s" % e for e in edges} <= set(reasons)
-    assert rep["verdict"] == "G1"
+    assert sorted(b["where"] for b in rep["blends"]) == sorted("Rib." + e for e in edges)
+    _assert_set_back(solid, rep, 1.0, V(28, 40, 9), V(0, 0, 1), V(0, -1, 0), V(0, 1, 0))
+    assert rep["verdict"] == "G0"  # the filling's, never G2
 
 
 def test_a_hole_listed_out_of_order_is_filled(monkeypatch):
@@ -3771,32 +3811,45 @@ def test_an_edge_two_fillets_shorten_from_both_ends_keeps_its_piece(monkeypatch)
         rep["kept_occt_faces"][0]["reason"]
 
 
-def test_a_blend_beside_fillets_kept_at_a_mixed_convexity_vertex_is_g2(monkeypatch):
-    """A block's top edge at y = 0 filleted with a pocket's rim edge and the pocket's
-    concave corner edge at the rim's end (a mixed-convexity vertex: OCCT's face between
-    those two fillets is kept with them). The top face, cut along the top edge's blend
-    and the kept fillets' edges, had no piece keeping the pocket's corner, so the top
-    edge was kept as OCCT's too (still so with fl._occt_pieces disabled). Every edge
-    that bounds the top face anew lies on OCCT's own top face (the blend's trimline is
-    the exact contact, as OCCT's on a plane), so that face takes its place: at R = 0.5,
-    1 and 1.5 the top edge's blend is G2 on both sides, its trimline on the top face is
-    the line y = R, z = 7 from x = 0 to 40, only the two fillets at the vertex (and the
-    face between) are kept, and the solid passes the BOP check."""
+def test_a_pocket_corner_of_a_convex_and_a_concave_fillet_is_set_back(monkeypatch):
+    """A block's top edge at y = 0 filleted with a pocket's rim edge at y = 17 and the
+    pocket's concave corner edge at (23, 17), whose third edge, the rim at x = 23, is
+    not selected (a mixed-convexity vertex). At R = 0.5, 1 and 1.5 all three are G2
+    blends, and the corner is set back by R along the rim at x = 23 and down the
+    concave blend's trimline on the wall x = 23, from (23, 17 - R, 7)
+    (_assert_set_back). The top edge's trimline on the top face is the line y = R,
+    z = 7 from x = 0 to 40.
+    Without the setback (fl.sb.Setback failing) OCCT's face between the rim's and the
+    corner's fillets is kept with them. The top face, cut along the top edge's blend
+    and the kept fillets' edges, had no piece keeping the pocket's corner; every edge
+    bounding it anew lies on OCCT's own top face (the blend's trimline is the exact
+    contact, as OCCT's on a plane), so that face takes its place (fl._occt_pieces): the
+    top edge's blend is still G2, and the solid passes the BOP check. With
+    fl._occt_pieces disabled too, the top edge is kept: no piece keeps the corner."""
     s, top, rim, corner = shapes.pocket_block()
     for r in (0.5, 1.0, 1.5):
         solid, rep = C2Blend.fillet_report(s, [top, rim, corner], r, label="Block")
-        assert_valid(solid)
-        assert [b["where"] for b in rep["blends"]] == ["Block." + top]
-        assert len(rep["trimlines"]) == 2
-        assert all(t["verdict"] == "G2" for t in rep["trimlines"])
-        assert sorted(k["where"] for k in rep["kept_occt_faces"]
-                      if k["where"].startswith("Block.")) == sorted(
-            ["Block." + rim, "Block." + corner])
+        assert sorted(b["where"] for b in rep["blends"]) == sorted(
+            "Block." + n for n in (top, rim, corner))
+        _assert_set_back(solid, rep, r, V(23, 17 - r, 7), V(0, -1, 0), V(0, 0, -1),
+                         V(0, 0, 1))
         assert rep["solid_check"] == "passes BRepCheck and the BOP check"
         lines = [e for e in solid.Edges
                  if abs(e.BoundBox.YMin - r) < 1e-7 and abs(e.BoundBox.YMax - r) < 1e-7
                  and abs(e.BoundBox.ZMin - 7) < 1e-7 and abs(e.BoundBox.ZMax - 7) < 1e-7]
         assert len(lines) == 1 and abs(lines[0].Length - 40) < 1e-7
+
+    def fails(*args):
+        raise ValueError("injected")
+    monkeypatch.setattr(fl.sb, "Setback", fails)
+    solid, rep = C2Blend.fillet_report(s, [top, rim, corner], 1.0, label="Block")
+    assert_valid(solid)
+    assert [b["where"] for b in rep["blends"]] == ["Block." + top]
+    assert all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert sorted(k["where"] for k in rep["kept_occt_faces"]
+                  if k["where"].startswith("Block.")) == sorted(
+        ["Block." + rim, "Block." + corner])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
     monkeypatch.setattr(fl, "_occt_pieces", lambda *args: None)
     solid, rep = C2Blend.fillet_report(s, [top, rim, corner], 1.0, label="Block")
     assert not rep["blends"]

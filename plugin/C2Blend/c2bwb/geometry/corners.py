@@ -73,7 +73,7 @@ def holes(shell, patches, tol):
         if len(faces) != 1 or e.isSeam(faces[0]) or e.Degenerated:
             continue
         mid = Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
-        d = [p.face.distToShape(mid)[0] for p in patches]
+        d = [p.region.distToShape(mid)[0] for p in patches]
         k = min(range(len(patches)), key=d.__getitem__)
         if d[k] > tol:
             raise Unfilled("the sewn faces leave a gap away from every corner patch")
@@ -81,13 +81,16 @@ def holes(shell, patches, tol):
     return out
 
 
-def fill(shell, edges, trials=TRIALS):
+def fill(shell, edges, trials=TRIALS, crease=None):
     """(face, trial): the face filling the hole bounded by `edges` (free edges of
     `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with each
     (maximum degree, points per edge) of `trials` tried until a seam is within
-    GOOD_G1, the best kept. Built in a hidden temporary document, which is closed
-    again; the active document is left as it was. Raises Unfilled."""
+    GOOD_G1, the best kept; through the edges on `crease` (an edge, or None) only, not
+    tangent there (a setback corner's edge on the face whose rim stays sharp,
+    setback.py). Built in a hidden temporary document, which is closed again; the
+    active document is left as it was. Raises Unfilled."""
     edges = _in_order(edges)
+    orders = [0 if crease is not None and on_edge(e, crease) else 1 for e in edges]
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
     try:
         holder = doc.addObject("Part::Feature", "Shell")
@@ -107,13 +110,13 @@ def fill(shell, edges, trials=TRIALS):
             filling.MaximumDegree, filling.PointsOnCurve = trial
             filling.BoundaryEdges = names
             filling.BoundaryFaces = faces
-            filling.BoundaryOrder = [1] * len(names)  # G1: tangent to each face
+            filling.BoundaryOrder = orders  # 1: tangent to the edge's face
             filling.recompute()
             result = filling.Shape
             if result.isNull() or len(result.Faces) != 1 or not result.isValid():
                 continue
             face = result.Faces[0].copy()
-            turn = _seam_angle(face, shell, edges)
+            turn = _seam_angle(face, shell, [e for e, k in zip(edges, orders) if k])
             if best is None or turn < best[0]:
                 best = (turn, face, trial)
             if turn <= GOOD_G1:
@@ -126,6 +129,15 @@ def fill(shell, edges, trials=TRIALS):
         return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+def on_edge(e, other):
+    """Whether edge e lies along `other` (its middle and quarter points within 1e-7 of
+    the size of e's box, plus 1e-9): a piece of it, after a cut or sewing."""
+    tol = 1e-7 * e.BoundBox.DiagonalLength + 1e-9
+    a, b = e.FirstParameter, e.LastParameter
+    return all(other.distToShape(Part.Vertex(e.valueAt(a + (b - a) * k)))[0] <= tol
+               for k in (0.25, 0.5, 0.75))
 
 
 def _in_order(edges):

@@ -21,7 +21,8 @@ Each end of an open fillet chain is one of:
   section (at the foot of a gusset's sloped edge, where a convex fillet meets two
   concave ones, the convex one ends along a slanted curve from one concave fillet's
   trimline to the other's), that end is trimmed, along a cut through OCCT's end edge
-  (_slant_tool).
+  (_slant_tool). At a setback corner (setback.py) the concave fillet's end is trimmed
+  likewise, along the setback's edge in place of OCCT's; the convex one is exact.
 """
 import math
 
@@ -101,6 +102,11 @@ def chain_ends(chain, fillet_faces, radius):
     for edge, patch in chain.corners:
         end = nearest(edge)
         end.corner = True
+        if patch.setback is not None:  # cut along its slanted end, or exact
+            if any(f.isSame(patch.setback.concave) for f in chain.faces):
+                end.slant = patch.setback.slant
+                end.tool = _slant_tool(end.slant, patch.setback.concave, radius)
+            continue
         m, t = guide[end.at]
         off = max(abs((p - m).dot(t)) for p in edge.discretize(9)) / t.Length
         if off > SLANT * edge.Length:

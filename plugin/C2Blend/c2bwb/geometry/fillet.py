@@ -22,7 +22,11 @@ the pieces of a chain whose data are too rough because the contact crosses knot 
 a side face (solve_chain, knots.py). Where three or more fillets meet at a vertex,
 OCCT's corner patch ends their chains; when any of them is blended, the patch is
 replaced by a plate filling tangent to the blends' end sections and to the end sections
-of the fillets kept there (corners.py), measured and reported, never claimed G2. Kept as
+of the fillets kept there (corners.py), measured and reported, never claimed G2. Where
+a convex and a concave fillet meet at a vertex whose third edge is not selected, OCCT's
+face between them vanishes at a point; that corner is set back along the third edge
+and filled likewise, meeting the face on the third edge's other side at an angle
+(setback.py). Kept as
 OCCT made them, and reported as such with the reason (no G2 claim is made there): chains
 whose side changes face where no blend is G2 to both faces, and chains whose exact
 contact, blend, fit, cut or end face's growth cannot be built or whose blend overshoots
@@ -45,6 +49,7 @@ from . import bopcheck as bc
 from . import corners as cn
 from . import ends
 from . import solids as sl
+from . import setback as sb
 from . import strips as st
 from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
@@ -82,6 +87,9 @@ CUSP_BISECTIONS = 4  # of the doubling's last step: the least tolerance found to
 # vertex a corner (_with_others: OCCT's fillet succeeds with them)
 CORNER_HINT = ("; with %s selected too, the fillets meet at a corner there instead "
                "(OCCT's fillet of them succeeds)")
+# a setback corner (setback.py) left unfilled, its fillets kept for their own reasons
+BETWEEN = ("OCCT's face between a convex and a concave fillet at a vertex whose third "
+           "edge is not selected, kept with those fillets")
 
 
 class NotReplaced(Exception):
@@ -1220,7 +1228,8 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
             _Touched.of(touched, _original(shape, res_face), b).tools.append(edge)
     for t in list(touched):
         # edges of OCCT fillets kept, and of corner patches, on this face bound it too
-        t.tools += [e for k in kept_fillets + [p.face for p in patches] for e in k.Edges
+        t.tools += [e for e in [e for k in kept_fillets for e in k.Edges]
+                    + [e for p in patches for e in p.tools]
                     if not e.Degenerated and _face_under(e, [t.orig], tol) is not None]
         t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
                      and _edge_on_face(e, t.orig, tol)]
@@ -1573,7 +1582,8 @@ class _Fill:
         if not left:
             return False
         try:
-            self.face, trial = cn.fill(self.shell, self.loop, left)
+            self.face, trial = cn.fill(self.shell, self.loop, left, self.patch.setback
+                                       and self.patch.setback.crease)
         except cn.Unfilled as ex:
             self.error = str(ex)
             return False
@@ -1713,11 +1723,20 @@ def _corner_check(solid, patch, scales):
     (check.check_edge along each of its edges): the worst of each measure, with the
     verdict by the report's criteria (scales: check.compare's)."""
     face = _patch_face(solid, patch)
-    rs = [ck.check_edge(solid, e, scales=scales) for e in face.Edges if not e.Degenerated]
-    return {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
-            "edges": len(rs), "g0": max(r["g0"] for r in rs),
-            "g1": max(r["g1"] for r in rs), "g2_rel": max(r["g2_rel"] for r in rs),
-            "verdict": min((r["verdict"] for r in rs), key=ck.RANK.get)}
+    crease = patch.setback and patch.setback.crease
+    edges = [e for e in face.Edges if not e.Degenerated]
+    creased = [e for e in edges if crease is not None and cn.on_edge(e, crease)]
+    rs = [ck.check_edge(solid, e, scales=scales) for e in edges
+          if not any(e is c for c in creased)]
+    out = {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
+           "edges": len(rs), "g0": max(r["g0"] for r in rs),
+           "g1": max(r["g1"] for r in rs), "g2_rel": max(r["g2_rel"] for r in rs),
+           "verdict": min((r["verdict"] for r in rs), key=ck.RANK.get)}
+    if creased:  # where it meets the face whose rim stays sharp, at an angle
+        wall = [f for f in solid.ancestorsOfType(creased[0], Part.Face) if not f.isSame(face)]
+        out["crease"] = {"edges": len(creased), "face": ck.element_name(solid, wall[0], "Face")
+                         if wall else None}
+    return out
 
 
 def _patch_face(solid, patch):
@@ -2127,8 +2146,16 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                            % (radius, max(off_boundary(f) for f in result.Faces)),
                            where_all, "radius")
     blended, kept = [], []
-    all_chains, patches = chains([RollingBallFace(result, f, fillet_faces)
-                                  for f in fillet_faces])
+    rbfs = [RollingBallFace(result, f, fillet_faces) for f in fillet_faces]
+    for r in rbfs:  # OCCT's face between a convex and a concave fillet: set back
+        if r.between:
+            try:
+                r.setback = sb.Setback(result, r.face, fillet_faces, radius)
+            except (ValueError, Part.OCCError) as ex:
+                r.corner += " (it cannot be set back: %s)" % ex
+                continue
+            r.patch, r.corner = True, None
+    all_chains, patches = chains(rbfs)
     selected = _selected(names, all_chains)
     for chain in all_chains:
         edges = selected.get(id(chain), [])
@@ -2196,7 +2223,13 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         measured["seconds"] = time.perf_counter() - t_assemble
     checks, corner_checks = measured["checks"]["trimlines"], measured["checks"]["corner_patches"]
     kept += [{"where": p.where(), "reason": "OCCT's corner patch, kept with the fillets "
-              "that meet there"} for p in patches if not any(p is q for q in filled)]
+              "that meet there"} for p in patches if not any(p is q for q in filled)
+             and p.setback is None]
+    for p in patches:  # a setback corner, not filled: OCCT's face between its fillets
+        if p.setback is not None and not any(p is q for q in filled):
+            v = min(shape.Vertexes, key=lambda x: p.face.distToShape(x)[0])
+            kept.append({"where": p.where(), "reason": BETWEEN + _with_others(
+                shape, [e for _, e in names], [v], radius, CORNER_HINT)})
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,

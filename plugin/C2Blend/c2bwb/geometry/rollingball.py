@@ -104,7 +104,9 @@ class RollingBallFace:
     corner: None, or a string saying why the face cannot be replaced (corner patch).
     between: True for OCCT's face between two or more fillets that it meets at an angle
     (where a concave and a convex fillet meet at a vertex whose third edge is not
-    filleted), which no filling replaces.
+    filleted); setback: where fillet.py sets that corner back (setback.Setback), which
+    makes the face a corner patch, replaced by a filling, and its fillets' ends there
+    its corners.
     patch: True for a corner patch: a face with two or more tangent joins to other
     rolling-ball faces but not two contacts (where three fillets meet at a vertex);
     touches: a corner patch's faces of the solid (not fillets) that share a vertex
@@ -119,6 +121,7 @@ class RollingBallFace:
         self.contacts, self.ends, self.links, self.corners = [], [], [], []
         self.corner = None
         self.between = False
+        self.setback = None  # setback.Setback, where fillet.py makes this a patch
         met = 0  # fillets met at an angle
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
@@ -336,13 +339,21 @@ class Run:
 
 
 class CornerPatch:
-    """OCCT's corner patch where three or more fillets meet at a vertex (a
-    RollingBallFace with patch set): face; chains: the FilletChains ending at it. It is
-    replaced by a filling (corners.py) when any of those chains is blended."""
+    """OCCT's corner patch where three or more fillets meet at a vertex, or its face
+    between a convex and a concave fillet that is set back (a RollingBallFace with
+    patch set): face; chains: the FilletChains ending at it; setback: None or the
+    setback.Setback; tools: the edges bounding the faces around it anew (face's own,
+    or the setback's); region: where the hole its filling fills lies (face, with the
+    setback's edges). It is replaced by a filling (corners.py) when any of those
+    chains is blended."""
 
     def __init__(self, rbf, chains_):
         self.face = rbf.face
         self.chains = [c for c in chains_ if any(p is rbf for _, p in c.corners)]
+        self.setback = rbf.setback
+        # the edges bounding the faces around it anew, and the shape its hole lies at
+        self.tools = self.setback.tools if self.setback else self.face.Edges
+        self.region = Part.Compound([self.face] + self.tools) if self.setback else self.face
 
     def where(self):
         """'corner patch at (x, y, z)', for messages."""
@@ -352,17 +363,22 @@ class CornerPatch:
 
 def chains(rbfs):
     """Group RollingBallFaces into FilletChains by their tangent links; a corner patch
-    ends the chains that join it. Returns ([FilletChain], [CornerPatch])."""
+    ends the chains that join it (or meet it at an angle: a setback corner's). Returns
+    ([FilletChain], [CornerPatch])."""
     patches = [r for r in rbfs if r.patch]
     rbfs = [r for r in rbfs if not r.patch]
-    for r in rbfs:
-        joins, r.links = r.links, []
-        for e, nb in joins:
+
+    def at_patch(pairs, r):  # [(edge, face)] but those on a patch, which go to r.corners
+        rest = []
+        for e, nb in pairs:
             patch = next((p for p in patches if nb.isSame(p.face)), None)
             if patch is None:
-                r.links.append((e, nb))
+                rest.append((e, nb))
             else:
                 r.corners.append((e, patch))
+        return rest
+    for r in rbfs:
+        r.ends, r.links = at_patch(r.ends, r), at_patch(r.links, r)
     groups = []
     for r in rbfs:
         linked = [g for g in groups if any(nb.isSame(m.face) for m in g for _, nb in r.links)]
