@@ -29,9 +29,10 @@ The filling is an approximation, measured and reported like a corner's, never G2
 the ten mixed-convexity vertices of the fillet surveys (tools/fillet_survey.py
 --random-edges 40 --seed 5 and --random-machined 60 --seed 2) it turns from the
 blends and T by 3e-4 to 3e-3 rad, and every solid passes the BOP check. It is less
-fair than a three-fillet corner's: at the pocket's corner R = 1 its largest
-principal curvature is 11 (a box's corner: 3.2), where the edge on T passes within
-half a radius of the concave blend's end. Tried and dropped: that edge through the
+fair than a three-fillet corner's: at the pocket's corner R = 1 (shapes.pocket_block)
+its largest principal curvature is 9.4 (a box's corner: 3.2), where the edge on T
+passes within half a radius of the concave blend's end. Tried and dropped: that edge
+through the
 point where the ball touching W at B touches T (a quarter circle 2 R round the
 concave fillet's axis on a box), or longer legs, or a setback of 1.5 to 2 R: the
 plate then rose 0.04 to 0.19 R above T, or OCCT's BOP check found it
