@@ -54,8 +54,8 @@ from . import strips as st
 from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
                           new_faces, off_boundary)
-from .surface import (Frame, angle, face_distance, frame_at_point, mesh_area, off_surface,
-                      only_c0, periods, project)
+from .surface import (Frame, angle, face_distance, frame_at_point, leaving, mesh_area,
+                      off_surface, only_c0, periods, project)
 from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
 
 DATA_REL = 1e-8  # target relative truncation error of the sampled boundary data
@@ -1690,20 +1690,12 @@ def _cusps(face):
                 continue
             v = shared[0]
             try:
-                da, db = _leaving(a, v.Point), _leaving(b, v.Point)
+                da, db = leaving(a, v.Point), leaving(b, v.Point)
             except Exception:  # noqa: BLE001 - OCCT's: no tangent there, no cusp found
                 continue
             if da.getAngle(db) < CUSP:
                 out.append((v, CUSP_REACH * min(a.Length, b.Length)))
     return out
-
-
-def _leaving(edge, point):
-    """The unit tangent of edge at its end at `point`, pointing into the edge."""
-    a, b = edge.FirstParameter, edge.LastParameter
-    first = (edge.valueAt(a) - point).Length <= (edge.valueAt(b) - point).Length
-    d = edge.tangentAt(a if first else b)
-    return d if first else -d
 
 
 def _sewn(faces):

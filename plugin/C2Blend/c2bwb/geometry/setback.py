@@ -32,16 +32,15 @@ blends and T by 3e-4 to 3e-3 rad, and every solid passes the BOP check. It is le
 fair than a three-fillet corner's: at the pocket's corner R = 1 (shapes.pocket_block)
 its largest principal curvature is 9.4 (a box's corner: 3.2), where the edge on T
 passes within half a radius of the concave blend's end. Tried and dropped: that edge
-through the
-point where the ball touching W at B touches T (a quarter circle 2 R round the
-concave fillet's axis on a box), or longer legs, or a setback of 1.5 to 2 R: the
-plate then rose 0.04 to 0.19 R above T, or OCCT's BOP check found it
+through the point where the ball touching W at B touches T (a quarter circle 2 R
+round the concave fillet's axis on a box), or longer legs, or a setback of 1.5 to
+2 R: the plate then rose 0.04 to 0.19 R above T, or OCCT's BOP check found it
 self-intersecting.
 """
 import FreeCAD
 import Part
 
-from .surface import frame_at_point
+from .surface import frame_at_point, leaving
 
 Vector2d = FreeCAD.Base.Vector2d
 
@@ -102,13 +101,12 @@ class Setback:
         if top.distToShape(Part.Vertex(a + across * eps))[0] < \
                 top.distToShape(Part.Vertex(a - across * eps))[0]:
             across = -across
-        v_out = -_leaving(_trimline_at(result, convex[0][1], top, q), q)  # on past Q
+        v_out = -leaving(_trimline_at(result, convex[0][1], top, q), q)  # on past Q
         self.tools = [_bezier(top, q, v_out, a, across),
                       _bezier(wall, a, -rim_out, b, trim_out)]
         self.crease = self.tools[1]
         self.slant = _bezier(c_face, c, None, b, None)
         self.concave = c_face
-        self.wall, self.top = wall, top
 
 
 def _has(edge, vertex):
@@ -141,14 +139,6 @@ def _along(edge, vertex, s):
     t = edge.getParameterByLength(s if first else edge.Length - s)
     d = edge.tangentAt(t)
     return edge.valueAt(t), (d if first else -d)
-
-
-def _leaving(edge, point):
-    """The unit tangent of edge at its end at `point`, pointing into the edge."""
-    a, b = edge.FirstParameter, edge.LastParameter
-    first = (edge.valueAt(a) - point).Length <= (edge.valueAt(b) - point).Length
-    d = edge.tangentAt(a if first else b)
-    return d if first else -d
 
 
 def _trimline_at(result, fillet, top, q):

@@ -251,6 +251,15 @@ def mesh_area(face, deflection):
                                                      p[t[:, 2]] - p[t[:, 0]]), axis=1).sum())
 
 
+def leaving(edge, point):
+    """The unit tangent of edge at its end at `point` (the nearer end), pointing into
+    the edge."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    first = (edge.valueAt(a) - point).Length <= (edge.valueAt(b) - point).Length
+    d = edge.tangentAt(a if first else b)
+    return d if first else -d
+
+
 def angle(a, b):
     """Angle in radians between two vectors, accurate for tiny angles."""
     return math.atan2(a.cross(b).Length, a.dot(b))
