@@ -1582,8 +1582,7 @@ class _Fill:
         if not left:
             return False
         try:
-            self.face, trial = cn.fill(self.shell, self.loop, left, self.patch.setback
-                                       and self.patch.setback.crease)
+            self.face, trial = cn.fill(self.shell, self.loop, left, self.patch.crease)
         except cn.Unfilled as ex:
             self.error = str(ex)
             return False
@@ -1715,9 +1714,8 @@ def _corner_check(solid, patch, scales):
     (check.check_edge along each of its edges): the worst of each measure, with the
     verdict by the report's criteria (scales: check.compare's)."""
     face = _patch_face(solid, patch)
-    crease = patch.setback and patch.setback.crease
     edges = [e for e in face.Edges if not e.Degenerated]
-    creased = [e for e in edges if crease is not None and cn.on_edge(e, crease)]
+    creased = [e for e in edges if patch.crease is not None and cn.on_edge(e, patch.crease)]
     rs = [ck.check_edge(solid, e, scales=scales) for e in edges
           if not any(e is c for c in creased)]
     out = {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
@@ -2037,6 +2035,15 @@ def _with_others(shape, edges, vertices, radius, phrase):
         % (tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in others)
 
 
+def _vertex_hint(shape, names, face, radius):
+    """CORNER_HINT for OCCT's face between two fillets at a vertex, naming the edges
+    there not among `names` ([(name, Part.Edge)]) with which OCCT's fillet succeeds
+    (_with_others), at the solid's vertex nearest to `face` (the one it stands for);
+    '' where there are none."""
+    v = min(shape.Vertexes, key=lambda x: face.distToShape(x)[0])
+    return _with_others(shape, [e for _, e in names], [v], radius, CORNER_HINT)
+
+
 def _corner_hint(shape, names, own, radius, memo):
     """For a blend kept as OCCT's: where its selected edges `own` ([(name, Part.Edge)])
     end at a vertex where another selected edge (of `names`) ends too, and edges there
@@ -2156,10 +2163,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         if chain.corner:
             reason = chain.corner + _tangent_ends(shape, label, edges)
             if any(m.between for m in chain.members):
-                # the vertex it stands for: the solid's vertex nearest to it
-                v = min(shape.Vertexes, key=lambda x: chain.faces[0].distToShape(x)[0])
-                reason += _with_others(shape, [e for _, e in names], [v], radius,
-                                       CORNER_HINT)
+                reason += _vertex_hint(shape, names, chain.faces[0], radius)
             kept.append({"where": where, "reason": reason})
             continue
         try:
@@ -2214,14 +2218,11 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         measured.update(solid=solid, checks=_measure(solid, blended, filled))
         measured["seconds"] = time.perf_counter() - t_assemble
     checks, corner_checks = measured["checks"]["trimlines"], measured["checks"]["corner_patches"]
-    kept += [{"where": p.where(), "reason": "OCCT's corner patch, kept with the fillets "
-              "that meet there"} for p in patches if not any(p is q for q in filled)
-             and p.setback is None]
-    for p in patches:  # a setback corner, not filled: OCCT's face between its fillets
-        if p.setback is not None and not any(p is q for q in filled):
-            v = min(shape.Vertexes, key=lambda x: p.face.distToShape(x)[0])
-            kept.append({"where": p.where(), "reason": BETWEEN + _with_others(
-                shape, [e for _, e in names], [v], radius, CORNER_HINT)})
+    for p in patches:  # not filled: OCCT's corner patch, or its face between two fillets
+        if not any(p is q for q in filled):
+            kept.append({"where": p.where(), "reason": "OCCT's corner patch, kept with the "
+                         "fillets that meet there" if p.setback is None else
+                         BETWEEN + _vertex_hint(shape, names, p.face, radius)})
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,

@@ -81,7 +81,7 @@ class Setback:
         convex = [(e, f) for e, f in on_fillet if not _has(e, pinch)]
         if len(concave) != 1 or len(convex) != 1:
             raise ValueError("its vertex where the fillets vanish is not on one of them")
-        (c_edge, c_face), (v_edge, _) = concave[0], convex[0]
+        (c_edge, c_face), (v_edge, v_face) = concave[0], convex[0]
         q = _shared(v_edge, t_edge).Point
         c = _shared(v_edge, c_edge).Point
         walls = [f for f in result.ancestorsOfType(pinch, Part.Face)
@@ -101,7 +101,7 @@ class Setback:
         if top.distToShape(Part.Vertex(a + across * eps))[0] < \
                 top.distToShape(Part.Vertex(a - across * eps))[0]:
             across = -across
-        v_out = -leaving(_trimline_at(result, convex[0][1], top, q), q)  # on past Q
+        v_out = -leaving(_trimline_at(result, v_face, top, q), q)  # on past Q
         self.tools = [_bezier(top, q, v_out, a, across),
                       _bezier(wall, a, -rim_out, b, trim_out)]
         self.crease = self.tools[1]
