@@ -587,6 +587,48 @@ def hole_through_pocket_wall():
     return s, names, vertical
 
 
+def slot_over_side_hole():
+    """A 31.6 x 29.1 x 13.6 block with a side hole r = 4.068 along x (axis y = 12.85,
+    z = 6.780) and a slot 4.515 wide from above down to z = 6.357, its round ends
+    (r = 2.257) about x = 5.894 and 9.549, y = 18.28: the hole cuts the slot's wall and
+    floor (--random-machined 40 --seed 7, part 4, to full precision: OCCT fillets its
+    edges at 0.099 but not at 0.1). Returns (solid, names of the edge where the hole
+    meets the slot's end at x = 5.894 and of the slot floor's arc there, which meet
+    at (4.115, 16.89, 6.357), where the hole meets the floor along the third edge)."""
+    s = Part.makeBox(31.597904085649844, 29.1241066260283, 13.5597100246129)
+    s = s.cut(Part.makeCylinder(4.067913007383861, 34, V(-1, 12.847240266552994,
+                                                         6.779855012306436), V(1, 0, 0)))
+    w, y, z = 2.257291199751672, 18.282549356832277, 6.357083697888904
+    x0, x1 = 5.894030395964995, 9.549069608462295
+    tool = Part.makeBox(x1 - x0, 2 * w, 8, V(x0, y - w, z))
+    for x in (x0, x1):
+        tool = tool.fuse(Part.makeCylinder(w, 8, V(x, y, z)))
+    s = s.cut(tool).removeSplitter()
+
+    def at_end(e):  # round the slot's end x = x0, from its floor up
+        b = e.BoundBox
+        return x0 - w - 1e-6 < b.XMin and b.XMax < x0 + 1e-6 and abs(b.ZMin - z) < 1e-6
+    wall = _edge_named(s, lambda e: at_end(e) and isinstance(e.Curve, Part.BSplineCurve))
+    floor = _edge_named(s, lambda e: at_end(e) and e.BoundBox.ZLength < 1e-9
+                        and isinstance(e.Curve, Part.Circle))
+    return s, [wall, floor]
+
+
+def boss_on_boss(lower=(5.0, 15.0, 20.0, 2.0), taller=(5.0, 21.0, 20.0, 4.0)):
+    """A 40 x 40 x 3 plate with two overlapping cylindrical bosses on it, each (radius,
+    x, y, height): the lower boss's top is a crescent, bounded by its rim (convex) and
+    by the taller boss's side (concave), which meet at the crescent's two tips, where
+    the bosses' sides meet along a vertical (concave) edge from the plate up to the
+    lower top. Returns (solid, names of the lower top's two edges)."""
+    s = Part.makeBox(40, 40, 3)
+    for r, x, y, h in (lower, taller):
+        s = s.fuse(Part.makeCylinder(r, h, V(x, y, 3)))
+    s = s.removeSplitter()
+    z = 3 + lower[3]
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if abs(e.BoundBox.ZMin - z) < 1e-9 and e.BoundBox.ZLength < 1e-9]
+
+
 def two_bosses_and_a_hole():
     """A 25.62 x 33.03 x 6.472 block with a boss r = 4.838 at (11.94, 21.99), 2.643 high,
     a blind hole r = 3.166 at (10.87, 27.27), 3.422 deep, cut through the boss's foot

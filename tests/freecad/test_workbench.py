@@ -1033,6 +1033,52 @@ def _assert_set_back(solid, rep, radius, p0, along_rim, along_trimline, out):
     assert max((p - p0).dot(out) for p in points) < 2 * corner["g0"] + 1e-7, corner
 
 
+@pytest.mark.parametrize("lower, taller, radius", [
+    ((5.0, 15.0, 20.0, 2.0), (5.0, 21.0, 20.0, 4.0), 0.3),
+    ((5.0, 15.0, 20.0, 2.0), (5.0, 18.0, 20.0, 4.0), 0.3),
+    ((5.32, 18.6, 22.14, 2.0), (4.68, 22.18, 22.52, 2.55), 0.204)])  # machined seed 7, 26
+def test_the_tips_of_a_crescent_between_two_bosses_are_set_back(lower, taller, radius):
+    """shapes.boss_on_boss: the lower top's rim (convex) and its edge along the taller
+    boss (concave) meet at the crescent's tips, whose third edge, where the bosses'
+    sides meet, is concave and not selected. There the setback's edge on the taller
+    boss's side T must cross that edge's line above the lower top before it comes down
+    to A, or it leaves T: with its first leg a third of its chord, the filling failed
+    or the sewing left free edges. Each tip is set back and filled: every trimline G2,
+    nothing kept, and the solid has a vertex at A, R below the point P0 where the
+    convex fillet's trimline on the lower boss's side W (R below its top: closed form
+    for a ball between a horizontal plane and a vertical cylinder) meets that edge,
+    and at B, R from P0 along that trimline (a circle of W's radius); the filling's
+    crease lies on W."""
+    s, names = shapes.boss_on_boss(lower, taller)
+    solid, rep = C2Blend.fillet_report(s, names, radius)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == []
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    corners = rep["corner_patches"]
+    assert len(corners) == 2
+    (r1, x1, y1, h1), (r2, x2, y2, _) = lower, taller
+    d = math.hypot(x2 - x1, y2 - y1)  # the circles meet at the tips (closed form)
+    along = (d * d + r1 * r1 - r2 * r2) / (2 * d)
+    ex, ey = (x2 - x1) / d, (y2 - y1) / d
+    top = 3 + h1
+    for c in corners:
+        assert c["crease"]["edges"] == 1 and c["g1"] < fl.cn.MAX_SEAM
+        wall = solid.getElement(c["crease"]["face"]).Surface
+        assert isinstance(wall, Part.Cylinder) and wall.Radius == pytest.approx(r1)
+    for side in (-1, 1):
+        h = side * math.sqrt(r1 * r1 - along * along)
+        tip = V(x1 + along * ex - h * ey, y1 + along * ey + h * ex, 0)
+        a = tip + V(0, 0, top - 2 * radius)
+        # B: on the circle z = top - R of radius r1, an arc R from P0, towards the tip's
+        # crescent side (the side away from the taller boss's centre)
+        phi = math.atan2(tip.y - y1, tip.x - x1)
+        bs = [V(x1 + r1 * math.cos(phi + k * radius / r1),
+                y1 + r1 * math.sin(phi + k * radius / r1), top - radius) for k in (-1, 1)]
+        b = max(bs, key=lambda p: math.hypot(p.x - x2, p.y - y2))
+        for p in (a, b):
+            assert min((v.Point - p).Length for v in solid.Vertexes) < 1e-6, (side, p)
+
+
 def test_a_vertex_of_a_concave_and_a_convex_fillet_is_set_back(monkeypatch):
     """The step's concave edge (x = 15, z = 10) and the convex edge rising from its end
     at y = 0: the third edge at their vertex, the lower block's top edge at y = 0, is
@@ -3737,6 +3783,52 @@ def test_blends_kept_at_a_mixed_vertex_name_the_edge_that_makes_it_a_corner(radi
     assert len(rep["corner_patches"]) == 2
     assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
+def test_occt_s_coarse_face_between_two_fillets_is_taken_for_one_of_its_fillets():
+    """shapes.slot_over_side_hole at R = 0.099: OCCT's fillet of the edge where the hole
+    meets the slot's end and of the slot floor's arc is coarse (edge tolerance 0.041)
+    and puts a small face between the two fillets at each end of the hole's cut through
+    the floor. That face lies within 10 times its tolerance of the hole's wall, so it
+    was taken for a piece of the wall: the blends' ends were cut back to it, and
+    Newton's method failed there. It lies on no original surface: 1e-3 and more off the
+    hole's wall by the closed form (distance from the axis - r), so it is now one of
+    the fillet's faces (rollingball.new_faces), and the report names each as OCCT's
+    face between two fillets, with the third edge, whose end lies where the floor
+    z = 6.357 meets the hole and the slot's end (closed form). The fillets stay OCCT's
+    (a coarse fillet: where it is set back, the blends do not sew to it)."""
+    s, names = shapes.slot_over_side_hole()
+    result = s.makeFillet(0.099, [s.getElement(n) for n in names])
+    hole = next(f.Surface for f in s.Faces if isinstance(f.Surface, Part.Cylinder)
+                and abs(f.Surface.Axis.x) > 0.5)
+    c, r = hole.Center, hole.Radius
+
+    def off_hole(p):
+        return abs(math.hypot(p.y - c.y, p.z - c.z) - r)
+    new = rb.new_faces(s, result)
+    between = [f for f in new if f.Area < 0.1 and min(off_hole(v.Point) for v in f.Vertexes) < 0.1]
+    assert len(between) == 2
+    original = Part.Compound(s.Faces)
+    for f in between:
+        inside = rb.interior_points(f)
+        assert max(off_hole(p) for p in inside) > 1e-3
+        assert all(original.distToShape(Part.Vertex(p))[0] <= rb.off_boundary(f)
+                   for p in inside)  # why it was missed
+    solid, rep = C2Blend.fillet_report(s, names, 0.099)
+    assert_valid(solid)
+    kept = rep["kept_occt_faces"]
+    assert not any("Newton" in k["reason"] for k in kept)
+    # OCCT's face at each end of the cut: set back, or not (OCCT's vertex there lies
+    # 2e-6 off the hole's wall, and the setback's edge on it does not reach it)
+    between = [k for k in kept if k["reason"].startswith(fl.BETWEEN) or k["reason"].startswith(
+        "it is OCCT's face between 2 fillets at a vertex")]
+    xs = sorted(float(re.search(r"at \(([-0-9.]+),", k["where"]).group(1)) for k in between)
+    mid = 0.5 * (5.894030395964995 + 9.549069608462295)  # the faces lie either side of it
+    assert len(xs) == 2 and xs[0] == pytest.approx(2 * mid - xs[1], abs=1e-2) and xs[0] < 5
+    z = 6.357083697888904  # the floor; the third edge ends at y on the hole, x on the slot
+    y = c.y + math.sqrt(r * r - (z - c.z) ** 2)
+    x = 5.894030395964995 - math.sqrt(2.257291199751672 ** 2 - (y - 18.282549356832277) ** 2)
+    assert all("the edge from (%.4g, %.4g, %.4g)" % (x, y, z) in k["reason"] for k in between)
 
 
 def test_a_fillet_kept_beside_blends_does_not_fail_the_whole_fillet():

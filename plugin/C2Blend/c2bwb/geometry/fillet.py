@@ -2149,7 +2149,8 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
     for r in rbfs:  # OCCT's face between a convex and a concave fillet: set back
         if r.between:
             try:
-                r.setback = sb.Setback(result, r.face, fillet_faces, radius)
+                r.setback = sb.Setback(result, r.face, fillet_faces, radius,
+                                       lambda f: _original(shape, f))
             except (ValueError, Part.OCCError) as ex:
                 r.corner += " (it cannot be set back: %s)" % ex
                 continue

@@ -14,6 +14,7 @@ import Part
 from .surface import angle, domain_distance, frame_at_point, winds
 
 TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
+ON_SURFACE = 1e-7  # relative: a face of OCCT's result lies on an original surface
 
 
 def interior_points(face, n=4):
@@ -46,7 +47,12 @@ def new_faces(original, result):
     some interior point is farther than off_boundary from every original face (by
     OCCT's distance, then, where that is farther, by domain_distance from the original
     faces that wind round their surface's seam: see face_distance, OCCT puts a
-    cylinder's face between the turns of a helical ridge away from most of it)."""
+    cylinder's face between the turns of a helical ridge away from most of it), or
+    no original face's surface holds them all (on_surface). OCCT keeps the surface of
+    each face it trims; where its fillet is coarse, a face it makes may lie within
+    off_boundary of the original ones (a slot's floor fillet, R = 0.099, meeting a side
+    hole: OCCT's 0.02-square face between it and the hole's rim fillet has tolerance
+    0.041 and lies 0.006 to 0.038 off the hole's wall)."""
     boundary = Part.Compound(original.Faces)
     winding = [g for g in original.Faces if winds(g)]
     out = []
@@ -54,11 +60,30 @@ def new_faces(original, result):
         if any(f.isSame(g) for g in original.Faces):
             continue
         tol = off_boundary(f)
+        inside = interior_points(f)
         if any(boundary.distToShape(Part.Vertex(p))[0] > tol
-               and all(domain_distance(g, p) > tol for g in winding)
-               for p in interior_points(f)):
+               and all(domain_distance(g, p) > tol for g in winding) for p in inside) \
+                or not any(on_surface(g, inside) for g in original.Faces):
             out.append(f)
     return out
+
+
+def on_surface(face, points):
+    """True when every one of `points` lies on face's surface: within ON_SURFACE of its
+    projection there, relative to the point's size (1 + its largest coordinate)."""
+    box = face.BoundBox
+    box.enlarge(ON_SURFACE * (1.0 + box.DiagonalLength))
+    if not all(box.isInside(p) for p in points):
+        return False
+    s = face.Surface
+    for p in points:
+        try:
+            u, v = s.parameter(p)
+        except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
+            return False
+        if (s.value(u, v) - p).Length > ON_SURFACE * (1.0 + max(map(abs, p))):
+            return False
+    return True
 
 
 def _unique_edges(face):

@@ -23,7 +23,12 @@ so that the hole no longer shrinks to a point: the plate filling it (corners.py)
 tangent to T and to both blends, and meets W along a crease, as T meets W along the
 rim (the filling's edge order there is 0, position only). s is the fillet's radius,
 at most half of either edge from P0. The edges on T and W are cubic Bezier curves in
-the faces' parameters.
+the faces' parameters. The fillets' roles may swap: where a lower boss meets a taller
+one (shapes.boss_on_boss), the lower top's rim fillet (convex) vanishes at P0 and is
+cut, the fillet along the taller boss (concave) ends exact, T is the taller boss's
+side, W the lower one's, and W's rim the concave edge where they meet. Q then lies
+beyond that rim, and the edge on T goes round the rim's end above the lower top
+before it comes down to A, its first leg as long as that takes (_on_top).
 
 The filling is an approximation, measured and reported like a corner's, never G2: on
 the ten mixed-convexity vertices of the fillet surveys (tools/fillet_survey.py
@@ -45,13 +50,19 @@ from .surface import frame_at_point, leaving
 Vector2d = FreeCAD.Base.Vector2d
 
 BEZIER = 1.0 / 3.0  # a Bezier leg's length, as a fraction of its chord
+# the first leg of the edge on T, as a fraction of its chord, each tried in turn until
+# the edge lies on the original T (where it leaves Q close to W's rim, as where two
+# bosses meet)
+FIRST_LEGS = (BEZIER, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0)
+ON_TOP = 16  # points inside the edge on T tested to lie on T
 REACH = 0.5  # the setback is at most this fraction of the edges from P0
 
 
 class Setback:
     """The setback corner replacing OCCT's face `face` (a RollingBallFace with between
     set) between a convex and a concave fillet of `radius` in `result` (OCCT's fillet;
-    fillet_faces: its rolling-ball faces).
+    fillet_faces: its rolling-ball faces; original(f): the face of the original solid
+    that a face f of `result` lies on).
 
     Attributes: tools, the edges on T and W that bound the faces anew; crease, the
     edge on W (the filling meets W there at an angle); slant, the concave fillet's end
@@ -60,7 +71,7 @@ class Setback:
     corner (its edges are not one on a face, one on each fillet and at most one
     degenerate) or the setback edges cannot be made."""
 
-    def __init__(self, result, face, fillet_faces, radius):
+    def __init__(self, result, face, fillet_faces, radius, original):
         on_face, on_fillet, pinch = [], [], None
         for e in face.Edges:
             if e.Degenerated:
@@ -102,7 +113,7 @@ class Setback:
                 top.distToShape(Part.Vertex(a - across * eps))[0]:
             across = -across
         v_out = -leaving(_trimline_at(result, v_face, top, q), q)  # on past Q
-        self.tools = [_bezier(top, q, v_out, a, across),
+        self.tools = [_on_top(top, original(top), q, v_out, a, across),
                       _bezier(wall, a, -rim_out, b, trim_out)]
         self.crease = self.tools[1]
         self.slant = _bezier(c_face, c, None, b, None)
@@ -151,12 +162,33 @@ def _trimline_at(result, fillet, top, q):
     raise ValueError("the convex fillet has no edge on the top face at its end")
 
 
-def _bezier(face, p0, d0, p1, d1):
+def _on_top(top, whole, q, d0, a, d1):
+    """The edge on T (`top`, OCCT's face; `whole`, the original solid's, which is cut
+    along it) from Q to A (_bezier, leaving Q along d0 and arriving at A along d1), its
+    first leg the shortest of FIRST_LEGS for which it lies on the original face. Where
+    Q lies close to W's rim (at the tip of a crescent where a lower boss meets a taller
+    one, T being the taller one's side and W the lower one's), a short leg turns down
+    too soon and crosses T's edge along the lower boss's top (OCCT's face grows past
+    it), and a long one hooks back too far for the filling: at a tip of
+    shapes.boss_on_boss (R = 0.204), legs of 0.7, 0.8, 0.9 and 1.2 times the chord
+    gave an edge off the face, a filling within 4e-3 rad, one within 0.013 rad and a
+    folded one. Raises ValueError when no leg keeps it on that face."""
+    tol = max(e.Tolerance for e in whole.Edges)
+    for first in FIRST_LEGS:
+        edge = _bezier(top, q, d0, a, d1, first)
+        t0, t1 = edge.FirstParameter, edge.LastParameter
+        if all(whole.isInside(edge.valueAt(t0 + (t1 - t0) * k / (ON_TOP + 1)), tol, True)
+               for k in range(1, ON_TOP + 1)):
+            return edge
+    raise ValueError("its edge on the top face leaves that face, whatever its legs")
+
+
+def _bezier(face, p0, d0, p1, d1, first=BEZIER):
     """An edge on face's surface from point p0 to p1 (on it): a cubic Bezier curve in its
-    parameters whose legs, BEZIER times the chord long, leave p0 along d0 and arrive at
-    p1 along d1 (unit 3D tangent vectors, or None: along the chord in the parameters,
-    the short way round a periodic surface). Raises ValueError when it misses p0 or
-    p1."""
+    parameters whose legs, `first` and BEZIER times the chord long, leave p0 along d0
+    and arrive at p1 along d1 (unit 3D tangent vectors, or None: along the chord in the
+    parameters, the short way round a periodic surface). Raises ValueError when it
+    misses p0 or p1."""
     surface = face.Surface
     f0, f1 = frame_at_point(face, p0), frame_at_point(face, p1)
     uv0, uv1 = Vector2d(f0.u, f0.v), Vector2d(f1.u, f1.v)
@@ -164,17 +196,17 @@ def _bezier(face, p0, d0, p1, d1):
         uv1.x += round((uv0.x - uv1.x) / surface.UPeriod()) * surface.UPeriod()
     if surface.isVPeriodic():
         uv1.y += round((uv0.y - uv1.y) / surface.VPeriod()) * surface.VPeriod()
-    leg = BEZIER * (p1 - p0).Length
+    chord = (p1 - p0).Length
 
-    def step(frame, d):
+    def step(frame, d, fraction):
         if d is None:
-            return (uv1 - uv0) * BEZIER
+            return (uv1 - uv0) * fraction
         du, dv = frame.coords(d)
-        return Vector2d(du, dv) * leg
+        return Vector2d(du, dv) * (fraction * chord)
     curve = Part.Geom2d.BezierCurve2d()
-    curve.setPoles([uv0, uv0 + step(f0, d0), uv1 - step(f1, d1), uv1])
+    curve.setPoles([uv0, uv0 + step(f0, d0, first), uv1 - step(f1, d1, BEZIER), uv1])
     edge = curve.toShape(surface)
     ends = [edge.valueAt(edge.FirstParameter), edge.valueAt(edge.LastParameter)]
-    if (ends[0] - p0).Length + (ends[1] - p1).Length > 1e-6 * (1.0 + leg):
+    if (ends[0] - p0).Length + (ends[1] - p1).Length > 1e-6 * (1.0 + BEZIER * chord):
         raise ValueError("a setback edge does not reach its ends")
     return edge
