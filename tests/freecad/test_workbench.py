@@ -1079,6 +1079,38 @@ def test_the_tips_of_a_crescent_between_two_bosses_are_set_back(lower, taller, r
             assert min((v.Point - p).Length for v in solid.Vertexes) < 1e-6, (side, p)
 
 
+def test_a_corner_patch_edge_crossing_a_corner_of_a_taller_boss_s_side_grows_it():
+    """shapes.boss_on_boss as in machined seed 7's part 26 (R = 0.204), with the lower
+    top's two edges, the lower boss's foot and the edge where the bosses' sides meet
+    at one tip selected: there three fillets meet, two concave and one convex, and
+    OCCT's corner patch has an edge on the taller boss's side T that crosses T's
+    corner at the lower top, 0.033 from it (as at a gusset's foot). The region it cuts
+    off that corner, by which T grows, was not made: the edge's part off T ends 3e-7
+    and 5e-7 from the legs along T's edges, which FreeCAD's sorting of the edges does
+    not join (fillet._loop), so T could not be cut and every blend on it was kept.
+    Now both tips are filled (the other one set back, its crease on the lower boss's
+    side), every trimline is G2 and nothing is kept."""
+    lower, taller = (5.32, 18.6, 22.14, 2.0), (4.68, 22.18, 22.52, 2.55)
+    s, names = shapes.boss_on_boss(lower, taller)
+    top = 3 + lower[3]
+
+    def edge(pred):
+        return next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if pred(e))
+    valley = edge(lambda e: isinstance(e.Curve, Part.Line) and e.BoundBox.ZLength > 1.0
+                  and abs(e.BoundBox.ZMax - top) < 1e-9 and e.BoundBox.YMin < lower[2])
+    foot = edge(lambda e: isinstance(e.Curve, Part.Circle) and e.BoundBox.ZLength < 1e-9
+                and abs(e.BoundBox.ZMin - 3) < 1e-9 and abs(e.Curve.Radius - lower[0]) < 1e-9)
+    solid, rep = C2Blend.fillet_report(s, names + [valley, foot], 0.204)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == []
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    corners = sorted(rep["corner_patches"], key=lambda c: "crease" in c)
+    assert len(corners) == 2 and all(c["g1"] < fl.cn.MAX_SEAM for c in corners)
+    assert "crease" not in corners[0] and corners[1]["crease"]["edges"] == 1
+    wall = solid.getElement(corners[1]["crease"]["face"]).Surface
+    assert isinstance(wall, Part.Cylinder) and wall.Radius == pytest.approx(lower[0])
+
+
 def test_a_vertex_of_a_concave_and_a_convex_fillet_is_set_back(monkeypatch):
     """The step's concave edge (x = 15, z = 10) and the convex edge rising from its end
     at y = 0: the third edge at their vertex, the lower block's top edge at y = 0, is
@@ -3749,17 +3781,41 @@ def test_a_convex_edge_ending_where_a_side_hole_opens_a_wall_is_g2():
 
 
 @pytest.mark.parametrize("radius", [0.15, 0.3])
-def test_blends_kept_at_a_mixed_vertex_name_the_edge_that_makes_it_a_corner(radius):
+def test_where_a_hole_cuts_a_pocket_s_wall_its_rim_and_the_floor_s_edges_are_set_back(
+        radius, monkeypatch):
     """shapes.hole_through_pocket_wall: the hole's rim (convex) and the pocket floor's
-    edges along its wall (concave) meet where the hole cuts the wall, at a vertex whose
-    third edge, the hole's wall on the pocket's wall, is not selected. No blend ends
-    there (their ends cannot be cut back, or OCCT puts a face between them), and each is
-    kept as OCCT's with its reason, which now ends by naming the vertical edge(s) at its
-    ends by their end points: x = 6
-    -+ sqrt(2.5^2 - 0.5^2), y = 15, z = 6 and 9 (closed form). Selected too, as the
-    message says, those edges make the vertices corners: nothing is kept, 2 corners are
-    filled, every trimline is G2 and the solid passes the BOP check."""
+    edges along its wall (concave) meet where the hole cuts the wall, at vertices
+    whose third edge, the hole's wall on the pocket's wall (x = 6 -+ sqrt(2.5^2 -
+    0.5^2), y = 15, from z = 6 to 9), is not selected. Each is set back: the floor
+    edge's fillet vanishes at P0 = (x, 15, 6 + R), where its trimline on the pocket's
+    wall meets that edge, and the solid has vertices at A, R above P0, and at B, along
+    that trimline min(R, half its length 3 - sqrt(6)) from P0 (closed form). This
+    used to fail four ways: OCCT's coarse face between the fillets (tolerance 0.005 to
+    0.011) taken for a piece of an original face; the floor edge's blend, which the
+    setback takes half of, kept whole, its probe beyond the cut (ends._inside); each
+    setback's edge on the wall taken as bounding the other piece of the wall, on the
+    same plane; and, at R = 0.15, the edge on the hole's wall passing 0.004 from the
+    pocket's corner, which the cut left on the hole wall's piece (setback.CLEAR).
+    With the setback failing, both fillets are kept, and their reason names the
+    vertical edges; selected too, those make the vertices corners, filled."""
     s, names, vertical = shapes.hole_through_pocket_wall()
+    solid, rep = C2Blend.fillet_report(s, names, radius)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == []
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    corners = rep["corner_patches"]
+    assert len(corners) == 2 and all(c["crease"]["edges"] == 1 and c["g1"] < fl.cn.MAX_SEAM
+                                     for c in corners)
+    reach = min(radius, 0.5 * (3 - math.sqrt(6.0)))
+    for d in (-1, 1):
+        x = 6 + d * math.sqrt(6.0)
+        for p in (V(x, 15, 6 + 2 * radius), V(x + d * reach, 15, 6 + radius)):
+            assert min((v.Point - p).Length for v in solid.Vertexes) < 1e-6, p
+
+    def fails(*args):
+        raise ValueError("injected")
+    monkeypatch.setattr(fl.sb, "Setback", fails)
     _, rep = C2Blend.fillet_report(s, names, radius)
     kept = rep["kept_occt_faces"]
     assert {w for k in kept for w in k["where"].split(", ") if w.startswith("Shape.Edge")} \
@@ -3777,6 +3833,7 @@ def test_blends_kept_at_a_mixed_vertex_name_the_edge_that_makes_it_a_corner(radi
             assert min(abs(x0 - (6 + d * math.sqrt(6.0))) for d in (-1, 1)) < 1e-3
             named.add(round(x0, 3))
     assert named == {round(6 - math.sqrt(6.0), 3), round(6 + math.sqrt(6.0), 3)}
+    monkeypatch.undo()
     solid, rep = C2Blend.fillet_report(s, names + vertical, radius)
     assert_valid(solid)
     assert [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")] == []

@@ -557,7 +557,7 @@ def _growth(face, edge, tol, across=lambda e: None):
     # (a boss into a wall: the wall's edge, extended, passes both of the boss's sides)
     _, corner, legs = min(spans, key=lambda c: c[0])
     try:  # OCCT makes a null face where the edge and legs bound no region
-        region = Part.Face(face.Surface, Part.Wire(Part.__sortEdges__([edge] + legs)))
+        region = Part.Face(face.Surface, _loop([edge] + legs, tol))
         _validate(region)
     except (Part.OCCError, ValueError):
         return None
@@ -565,6 +565,22 @@ def _growth(face, edge, tol, across=lambda e: None):
     if region.normalAt(*uv[0]).dot(face.normalAt(*uv[1])) < 0:
         region.reverse()  # oriented like face, so the two merge into one
     return region, corner.Point, legs
+
+
+def _loop(edges, tol):
+    """The wire of `edges`, which follow one another round a loop, each ending within
+    tol of the next: sorted by FreeCAD, or where that leaves it open, joined by OCCT
+    with copies of them whose tolerance is tol (the part of an edge of OCCT's corner
+    patch crossing a corner of a taller boss's side, where a lower boss meets it, ends
+    3e-7 and 5e-7 from the legs along the face's edges, which FreeCAD's sorting does
+    not join)."""
+    wire = Part.Wire(Part.__sortEdges__(edges))
+    if wire.isClosed():
+        return wire
+    copies = [e.copy() for e in edges]
+    for e in copies:
+        e.fixTolerance(tol)
+    return Part.Wire(copies)
 
 
 def _parts(face, edge, tol, across):
@@ -1227,10 +1243,15 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                 continue  # a mitre, shared with another blend
             _Touched.of(touched, _original(shape, res_face), b).tools.append(edge)
     for t in list(touched):
-        # edges of OCCT fillets kept, and of corner patches, on this face bound it too
+        # edges of OCCT fillets kept, and of corner patches, on this face bound it too;
+        # a patch's where they touch it (the two setbacks where a hole cuts a pocket's
+        # wall, shapes.hole_through_pocket_wall, have their edges on the wall's plane,
+        # each on one of the two faces the hole leaves of it)
         t.tools += [e for e in [e for k in kept_fillets for e in k.Edges]
-                    + [e for p in patches for e in p.tools]
                     if not e.Degenerated and _face_under(e, [t.orig], tol) is not None]
+        t.tools += [e for p in patches for e in p.tools
+                    if not e.Degenerated and _face_under(e, [t.orig], tol) is not None
+                    and t.orig.distToShape(e)[0] <= max(tol, 10.0 * e.Tolerance)]
         t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
                      and _edge_on_face(e, t.orig, tol)]
 

@@ -51,9 +51,13 @@ Vector2d = FreeCAD.Base.Vector2d
 
 BEZIER = 1.0 / 3.0  # a Bezier leg's length, as a fraction of its chord
 # the first leg of the edge on T, as a fraction of its chord, each tried in turn until
-# the edge lies on the original T (where it leaves Q close to W's rim, as where two
-# bosses meet)
+# the edge lies on the original T and passes CLEAR radii or more from its vertex
+# nearest to P0 (_on_top). On shapes.hole_through_pocket_wall a third of the chord
+# passes it by 0.003, 0.009 and 0.015 R at R = 0.15, 0.2 and 0.1 (at 0.15 the cut left
+# it on T's piece kept); the legs taken on the survey's parts pass it by 0.024 R and
+# more.
 FIRST_LEGS = (BEZIER, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0)
+CLEAR = 0.02
 ON_TOP = 16  # points inside the edge on T tested to lie on T
 REACH = 0.5  # the setback is at most this fraction of the edges from P0
 
@@ -113,7 +117,8 @@ class Setback:
                 top.distToShape(Part.Vertex(a - across * eps))[0]:
             across = -across
         v_out = -leaving(_trimline_at(result, v_face, top, q), q)  # on past Q
-        self.tools = [_on_top(top, original(top), q, v_out, a, across),
+        self.tools = [_on_top(top, original(top), q, v_out, a, across, pinch.Point,
+                              CLEAR * radius),
                       _bezier(wall, a, -rim_out, b, trim_out)]
         self.crease = self.tools[1]
         self.slant = _bezier(c_face, c, None, b, None)
@@ -162,25 +167,32 @@ def _trimline_at(result, fillet, top, q):
     raise ValueError("the convex fillet has no edge on the top face at its end")
 
 
-def _on_top(top, whole, q, d0, a, d1):
+def _on_top(top, whole, q, d0, a, d1, p0, clear):
     """The edge on T (`top`, OCCT's face; `whole`, the original solid's, which is cut
     along it) from Q to A (_bezier, leaving Q along d0 and arriving at A along d1), its
-    first leg the shortest of FIRST_LEGS for which it lies on the original face. Where
-    Q lies close to W's rim (at the tip of a crescent where a lower boss meets a taller
-    one, T being the taller one's side and W the lower one's), a short leg turns down
-    too soon and crosses T's edge along the lower boss's top (OCCT's face grows past
-    it), and a long one hooks back too far for the filling: at a tip of
-    shapes.boss_on_boss (R = 0.204), legs of 0.7, 0.8, 0.9 and 1.2 times the chord
-    gave an edge off the face, a filling within 4e-3 rad, one within 0.013 rad and a
-    folded one. Raises ValueError when no leg keeps it on that face."""
+    first leg the shortest of FIRST_LEGS for which it lies on the original face and
+    passes `clear` (model units) or more from that face's vertex V nearest to P0
+    (`p0`), where the edges the fillets consume end: V must lie in the hole, not on
+    the piece of T kept. Where Q lies close to W's rim (at the tip of a crescent where
+    a lower boss meets a taller one, T being the taller one's side and W the lower
+    one's), a short leg turns down too soon and crosses T's edge along the lower
+    boss's top (OCCT's face grows past it), and a long one hooks back too far for the
+    filling: at a tip of shapes.boss_on_boss (R = 0.204), legs of 0.7, 0.8, 0.9 and
+    1.2 times the chord gave an edge off the face, a filling within 4e-3 rad, one
+    within 0.013 rad and a folded one. Where a hole cuts a pocket's wall
+    (shapes.hole_through_pocket_wall, R = 0.15), a third of the chord passed 0.004
+    from V, which the cut then left on T's piece, and that piece was dropped. Raises
+    ValueError when no leg does."""
     tol = max(e.Tolerance for e in whole.Edges)
+    corner = Part.Vertex(min((v.Point for v in whole.Vertexes), key=lambda p: (p - p0).Length))
     for first in FIRST_LEGS:
         edge = _bezier(top, q, d0, a, d1, first)
         t0, t1 = edge.FirstParameter, edge.LastParameter
         if all(whole.isInside(edge.valueAt(t0 + (t1 - t0) * k / (ON_TOP + 1)), tol, True)
-               for k in range(1, ON_TOP + 1)):
+               for k in range(1, ON_TOP + 1)) and edge.distToShape(corner)[0] >= clear:
             return edge
-    raise ValueError("its edge on the top face leaves that face, whatever its legs")
+    raise ValueError("its edge on the top face leaves that face, or passes its corner, "
+                     "whatever its legs")
 
 
 def _bezier(face, p0, d0, p1, d1, first=BEZIER):
