@@ -629,6 +629,45 @@ def boss_on_boss(lower=(5.0, 15.0, 20.0, 2.0), taller=(5.0, 21.0, 20.0, 4.0)):
                if abs(e.BoundBox.ZMin - z) < 1e-9 and e.BoundBox.ZLength < 1e-9]
 
 
+def pocket_under_boss():
+    """A 38.57 x 33.63 x 14.36 block with a boss r = 4.822 at (28.51, 19.31), 8.808 high,
+    and a pocket 10.56 x 7.918 from z = 8.362 up to 1 above the block's top, which
+    tunnels under the boss (its ceiling z = 15.36 lies inside the boss), to full
+    precision (--random-machined 60 --seed 10, part 55). Returns (solid, names of the
+    block's top edge at y = 0, the edge where the boss's side meets the pocket's wall
+    y = 15.96, and the edge where that wall meets the ceiling)."""
+    s = Part.makeBox(38.56981841968583, 33.6263458995889, 14.355130813464195)
+    s = s.fuse(Part.makeCylinder(4.821921287641795, 23.163005723336127 - 14.355130813464195,
+                                 V(28.510317115667146, 19.30623028832621, 14.355130813464195)))
+    x0, x1 = 23.992102897819763, 34.548945963575406
+    y0, y1 = 15.961342472322428, 23.878974771639164
+    z0, z1 = 8.361584618555145, 15.355130813464195
+    s = s.cut(Part.makeBox(x1 - x0, y1 - y0, z1 - z0, V(x0, y0, z0))).removeSplitter()
+
+    def flat(e, y, z):
+        b = e.BoundBox
+        return abs(b.YMin - y) < 1e-9 and b.YLength < 1e-9 and abs(b.ZMin - z) < 1e-9
+    front = _edge_named(s, lambda e: flat(e, 0.0, 14.355130813464195) and e.BoundBox.ZLength < 1e-9)
+    side = _edge_named(s, lambda e: flat(e, y0, 14.355130813464195) and e.BoundBox.ZLength > 0.5
+                       and e.BoundBox.XMin < 28.5)  # the boss's side at x = 25.04
+    ceiling = _edge_named(s, lambda e: flat(e, y0, z1) and e.BoundBox.ZLength < 1e-9)
+    return s, [front, side, ceiling]
+
+
+def placed_l_block():
+    """An L block (a 12.12 x 14.86 x 15.00 box and a 4.85 wide upright on it, 30.0 high)
+    turned about (0.84, -0.33, -0.44) by 239 degrees and placed at (638, -851, 374),
+    to full precision (--random-edges 40 --seed 12 --turned, part 0). Returns (solid,
+    names of the 13 edges that part selects)."""
+    a, b, c = 12.11856018032822, 14.86208753985883, 14.996157066872572
+    s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.4 * a, b, 2 * c)).removeSplitter()
+    s.Placement = FreeCAD.Placement(
+        V(637.6402556841608, -850.7807327282451, 373.89100818708334),
+        FreeCAD.Rotation(0.7290864496804582, -0.2883754381594327, -0.38102510941685774,
+                         -0.489992266829357))
+    return s, ["Edge%d" % k for k in (1, 4, 5, 6, 8, 9, 10, 11, 12, 13, 15, 16, 18)]
+
+
 def two_bosses_and_a_hole():
     """A 25.62 x 33.03 x 6.472 block with a boss r = 4.838 at (11.94, 21.99), 2.643 high,
     a blind hole r = 3.166 at (10.87, 27.27), 3.422 deep, cut through the boss's foot

@@ -1298,6 +1298,11 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                 raise ValueError("an edge of a fillet kept as OCCT's, or of a corner "
                                  "patch, leaves it away from its corners")
             pieces = _cut_face(t.orig, t.inside, sharp, t.legs, tol)
+            if not pieces and _occt_pieces(result, t, drop + kept_fillets, tol):
+                # every piece touches an edge the fillets consume, yet OCCT's fillet
+                # keeps some of the face (a pocket's wall under a boss, next to fillets
+                # kept as OCCT's there: machined seed 10, part 55)
+                raise ValueError("no piece of it is kept, where OCCT's fillet keeps some")
             for section, whole, corner, region, legs in t.grown:  # the fillets' end sections
                 # extend the face: at each corner, the piece keeping it grows
                 k = next((i for i, f in enumerate(pieces) if any(
