@@ -180,7 +180,7 @@ def _on_top(top, whole, q, d0, a, d1, p0, clear):
     filling: at a tip of shapes.boss_on_boss (R = 0.204), legs of 0.7, 0.8, 0.9 and
     1.2 times the chord gave an edge off the face, a filling within 4e-3 rad, one
     within 0.013 rad and a folded one. Where a hole cuts a pocket's wall
-    (shapes.hole_through_pocket_wall, R = 0.15), a third of the chord passed 0.004
+    (shapes.hole_through_pocket_wall, R = 0.15), a third of the chord passed 5e-4
     from V, which the cut then left on T's piece, and that piece was dropped. Raises
     ValueError when no leg does."""
     tol = max(e.Tolerance for e in whole.Edges)
