@@ -30,6 +30,7 @@ import numpy as np
 import Part
 
 from ..errors import occt_message
+from .rollingball import interior_points
 from .surface import angle, frame_at_point, off_surface
 
 EXTEND = 1.0  # radii traced past a trimmed end
@@ -484,29 +485,16 @@ def trim(blends, original_face):
         if len(keep) != 1 or any(keep[0].distToShape(m)[0] <= tol for m in beyond):
             # the probe, OCCT's face's middle, lies beyond a cut taking most of a short
             # fillet (a setback's slant 0.28 along one 0.55 long): the one piece holding
-            # no end traced past, if there is one, with a probe inside it
+            # no end traced past, if there is one, probed at a point inside it
             keep = [p for p in pieces if all(p.distToShape(m)[0] > tol for m in beyond)]
-            probe = _inside(keep[0], b.surface, tol) if len(keep) == 1 else None
-            if probe is None:
+            inside = interior_points(keep[0]) if len(keep) == 1 else []
+            if not inside:
                 failed.append((b, "its blend, traced %g radii past OCCT's end, is not cut "
                                "off by the face or fillet there" % EXTEND))
                 continue
-            b.probe = probe
+            b.probe = inside[0]
         b.face = keep[0]
     return failed
-
-
-def _inside(piece, surface, tol):
-    """A point of surface inside `piece` (a face on it) and more than 10 tol from its
-    edges, on the middle u = 0.5 at a fraction of piece's v range (a half, a quarter,
-    three quarters, ...), or None."""
-    v0, v1 = piece.ParameterRange[2:4]
-    edges = Part.Compound(piece.Edges)
-    for k in (0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875):
-        p = surface.value(0.5, v0 + (v1 - v0) * k)
-        if piece.isInside(p, tol, True) and edges.distToShape(Part.Vertex(p))[0] > 10 * tol:
-            return p
-    return None
 
 
 def side_range(b, side):

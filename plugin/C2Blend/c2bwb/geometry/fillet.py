@@ -1247,11 +1247,10 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         # a patch's where they touch it (the two setbacks where a hole cuts a pocket's
         # wall, shapes.hole_through_pocket_wall, have their edges on the wall's plane,
         # each on one of the two faces the hole leaves of it)
-        t.tools += [e for e in [e for k in kept_fillets for e in k.Edges]
+        touching = [e for p in patches for e in p.tools
+                    if t.orig.distToShape(e)[0] <= max(tol, 10.0 * e.Tolerance)]
+        t.tools += [e for e in [e for k in kept_fillets for e in k.Edges] + touching
                     if not e.Degenerated and _face_under(e, [t.orig], tol) is not None]
-        t.tools += [e for p in patches for e in p.tools
-                    if not e.Degenerated and _face_under(e, [t.orig], tol) is not None
-                    and t.orig.distToShape(e)[0] <= max(tol, 10.0 * e.Tolerance)]
         t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
                      and _edge_on_face(e, t.orig, tol)]
 

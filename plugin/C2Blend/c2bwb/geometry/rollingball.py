@@ -11,7 +11,7 @@ contact.py traces the exact contact along a chain, with its faces as the guide.
 """
 import Part
 
-from .surface import angle, domain_distance, frame_at_point, winds
+from .surface import angle, domain_distance, frame_at_point, off_surface, winds
 
 TANGENT_ANGLE = 1e-3  # rad: a contact edge joins its faces tangentially
 ON_SURFACE = 1e-7  # relative: a face of OCCT's result lies on an original surface
@@ -75,15 +75,11 @@ def on_surface(face, points):
     box.enlarge(ON_SURFACE * (1.0 + box.DiagonalLength))
     if not all(box.isInside(p) for p in points):
         return False
-    s = face.Surface
-    for p in points:
-        try:
-            u, v = s.parameter(p)
-        except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
-            return False
-        if (s.value(u, v) - p).Length > ON_SURFACE * (1.0 + max(map(abs, p))):
-            return False
-    return True
+    try:
+        return all(off_surface(face.Surface, p) <= ON_SURFACE * (1.0 + max(map(abs, p)))
+                   for p in points)
+    except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
+        return False
 
 
 def _unique_edges(face):
@@ -370,8 +366,8 @@ class CornerPatch:
     setback.Setback; tools: the edges bounding the faces around it anew (face's own,
     or the setback's); region: where the hole its filling fills lies (face, with the
     setback's edges); crease: the setback's edge on the face whose rim stays sharp,
-    which the filling only passes through, or None. It is replaced by a filling (corners.py) when any of those
-    chains is blended."""
+    which the filling only passes through, or None. It is replaced by a filling
+    (corners.py) when any of those chains is blended."""
 
     def __init__(self, rbf, chains_):
         self.face = rbf.face
