@@ -3824,7 +3824,7 @@ def test_where_a_hole_cuts_a_pocket_s_wall_its_rim_and_the_floor_s_edges_are_set
     that trimline min(R, half its length 3 - sqrt(6)) from P0 (closed form). This
     used to fail four ways: OCCT's coarse face between the fillets (tolerance 0.005 to
     0.011) taken for a piece of an original face; the floor edge's blend, which the
-    setback takes half of, kept whole, its probe beyond the cut (ends._inside); each
+    setback takes half of, kept whole, its probe beyond the cut (ends.trim); each
     setback's edge on the wall taken as bounding the other piece of the wall, on the
     same plane; and, at R = 0.15, the edge on the hole's wall passing 5e-4 from the
     pocket's corner, which the cut left on the hole wall's piece (setback.CLEAR).
