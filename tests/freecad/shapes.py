@@ -654,6 +654,21 @@ def pocket_under_boss():
     return s, [front, side, ceiling]
 
 
+def box_with_void():
+    """A 20 x 20 x 10 box with a closed 6 x 6 x 4 void from (7, 7, 3) (a solid of two
+    shells, as a pocket closed by a boss fused over it makes: --random-machined 60
+    --seed 13, part 9). Returns (solid, names of the box's top edge at y = 0 and of the
+    void's top edge at y = 7)."""
+    s = Part.makeBox(20, 20, 10).cut(Part.makeBox(6, 6, 4, V(7, 7, 3)))
+
+    def flat(e, y, z):
+        b = e.BoundBox
+        return b.YLength < 1e-9 and b.ZLength < 1e-9 and abs(b.YMin - y) < 1e-9 and \
+            abs(b.ZMin - z) < 1e-9
+    return s, [_edge_named(s, lambda e: flat(e, 0.0, 10.0)),
+               _edge_named(s, lambda e: flat(e, 7.0, 7.0))]
+
+
 def placed_l_block():
     """An L block (a 12.12 x 14.86 x 15.00 box and a 4.85 wide upright on it, 30.0 high)
     turned about (0.84, -0.33, -0.44) by 239 degrees and placed at (638, -851, 374),

@@ -3900,6 +3900,59 @@ def test_a_face_whose_cut_keeps_no_piece_is_taken_from_occt_s_fillet():
     assert wall(solid) == pytest.approx(wall(occt), rel=1e-9) and wall(occt) > 60
 
 
+@pytest.mark.parametrize("which", [0, 1, None])
+def test_a_solid_with_a_void_keeps_it(which):
+    """shapes.box_with_void: a solid of two shells. The sewing gives both back, closed,
+    and the whole fillet failed with "sewing the blend faces to the solid failed: 2
+    shell(s), 0 free edge(s)" (--random-machined 60 --seed 13, part 9: a pocket closed
+    by a boss). Now the outer shell bounds the solid and the other one its void:
+    filleting the box's top edge (convex, R = 2), the void's top edge (concave), or
+    both, the solid is valid and G2, the void's centre lies outside it, and its volume
+    is its outer shell's less its void's. A shell without a blend keeps its volume,
+    20 x 20 x 10 or 6 x 6 x 4, and one with a blend gains or loses between 0 and
+    R^2 L / 2 (the blend lies in the triangle of the edge and its trimlines, L = 20 or
+    6)."""
+    s, names = shapes.box_with_void()
+    chosen = names if which is None else [names[which]]
+    r = 2.0 if names[0] in chosen else 1.0
+    solid, rep = C2Blend.fillet_report(s, chosen, r)
+    assert_valid(solid)
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert not rep["kept_occt_faces"]
+    assert not solid.isInside(V(10, 10, 5), 1e-7, True)
+    assert solid.isInside(V(10, 10, 1.5), 1e-7, True)
+    outer, void = sorted((abs(Part.Solid(Part.Shell(sh.Faces)).Volume) for sh in solid.Shells),
+                         reverse=True)
+    assert len(solid.Shells) == 2 and solid.Volume == pytest.approx(outer - void, rel=1e-12)
+    for volume, sharp, length, name in ((outer, 4000.0, 20, names[0]),
+                                        (void, 144.0, 6, names[1])):
+        if name in chosen:
+            assert 0 < abs(volume - sharp) < r * r * length / 2
+        else:
+            assert volume == pytest.approx(sharp, rel=1e-12)
+
+
+def test_corners_on_a_solid_and_its_void_are_filled():
+    """shapes.box_with_void with the three edges at the box's corner (0, 0, 10) and the
+    void's twelve edges selected at R = 1: both shells have holes at corners (one and
+    eight), and each is filled; the solid is valid, its trimlines G2, nothing is kept
+    as OCCT's, and the void's centre lies outside the solid."""
+    s, _ = shapes.box_with_void()
+    corner = next(v for v in s.Vertexes if v.Point.distanceToPoint(V(0, 0, 10)) < 1e-9)
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+             if any(e.isSame(x) for x in s.ancestorsOfType(corner, Part.Edge))
+             or (e.BoundBox.XMin > 6.9 and e.BoundBox.XMax < 13.1
+                 and e.BoundBox.YMin > 6.9 and e.BoundBox.YMax < 13.1)]
+    assert len(names) == 15
+    solid, rep = C2Blend.fillet_report(s, names, 1.0)
+    assert_valid(solid)
+    assert len(solid.Shells) == 2 and len(rep["corner_patches"]) == 9
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert not rep["kept_occt_faces"]
+    assert not solid.isInside(V(10, 10, 5), 1e-7, True)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+
 def test_occt_s_coarse_face_between_two_fillets_is_taken_for_one_of_its_fillets():
     """shapes.slot_over_side_hole at R = 0.099: OCCT's fillet of the edge where the hole
     meets the slot's end and of the slot floor's arc is coarse (edge tolerance 0.041)

@@ -1327,13 +1327,15 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         faces_out.append(f)
     shells = _sewn(faces_out)
     fills = []  # _Fill per corner patch
-    if patches and len(shells) == 1:  # fill the holes the blends leave at the corners
+    holed = [s for s in shells if not s.isClosed()]  # those with corners to fill
+    if patches and len(shells) == len(result.Shells):  # fill the holes the blends leave
+        holed = holed[0] if len(holed) == 1 else Part.Compound(holed)  # (voids have some)
         try:
-            loops = cn.holes(shells[0], patches, 0.5 * min(p.face.BoundBox.DiagonalLength
-                                                            for p in patches))
+            loops = cn.holes(holed, patches, 0.5 * min(p.face.BoundBox.DiagonalLength
+                                                       for p in patches))
         except cn.Unfilled:
             loops = []  # a sewing gap: reported below
-        fills = [_Fill(shells[0], p, loop, _at_corner(p, blended))
+        fills = [_Fill(holed, p, loop, _at_corner(p, blended))
                  for p, loop in zip(patches, loops)]
 
     def closed():  # the solid, sewn again with the fillings as they are now
@@ -1616,13 +1618,14 @@ class _Fill:
 
 
 def _closed(shells, result, where, blended, fuzzy):
-    """The solid bounded by the one closed shell of `shells`, facing outwards, with the
+    """The solid bounded by the closed shells of `shells`, as many as `result` (OCCT's
+    fillet) has: the outer one facing outwards, those of voids inwards, with the
     tolerance of each edge not in `result` (OCCT's fillet) raised to its pcurves'
     deviation, and of its vertices to the gaps up to `fuzzy` (the faces' cut's) that
     the cut leaves there (_update_tolerances). A sewing that left free edges raises
     Unassembled for the blends (of `blended`) those edges touch, which are then kept as
     OCCT's, or C2BlendError when they touch none."""
-    if len(shells) != 1 or not shells[0].isClosed():
+    if len(shells) != len(result.Shells) or not all(s.isClosed() for s in shells):
         free = [e for s in shells for e in s.Edges
                 if len(s.ancestorsOfType(e, Part.Face)) == 1
                 and not e.isSeam(s.ancestorsOfType(e, Part.Face)[0])]
@@ -1640,18 +1643,28 @@ def _closed(shells, result, where, blended, fuzzy):
         raise C2BlendError("sewing the blend faces to the solid failed: %d shell(s), %d free "
                            "edge(s) left (gaps wider than the sewing tolerance)"
                            % (len(shells), len(free)), where, "sewing")
-    solid = Part.Solid(shells[0])
-    if solid.Orientation == "Reversed" or solid.Volume < 0:
-        # the sewn faces point inwards and Part.Solid only flagged the solid reversed
-        # around them; OCCT's fillet and chamfer of such a solid give an inside-out,
-        # invalid one. Reverse the faces themselves instead.
-        solid = Part.Solid(Part.Shell([f.reversed() for f in shells[0].Faces]))
+    shells = [_outwards(s) for s in shells]
+    solid = max(shells, key=lambda s: s.Volume)  # the outer shell, around every void
+    if len(shells) > 1:
+        solid = Part.makeSolid(Part.Compound(
+            [solid.Shells[0]] + [s.Shells[0].reversed() for s in shells if s is not solid]))
     # every edge that cutting or sewing made anew (those of OCCT's result are as they
     # were): the blends' edges, and an original face's other edges, rebuilt by the cut
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
     old = {e.hashCode() for e in result.Edges}
     _update_tolerances([e for e in solid.Edges if e.hashCode() not in old], fuzzy)
     _tolerate_cusps(solid, {v.hashCode() for v in result.Vertexes})
+    return solid
+
+
+def _outwards(shell):
+    """The solid that the closed `shell` bounds, its faces pointing outwards."""
+    solid = Part.Solid(shell)
+    if solid.Orientation == "Reversed" or solid.Volume < 0:
+        # the sewn faces point inwards and Part.Solid only flagged the solid reversed
+        # around them; OCCT's fillet and chamfer of such a solid give an inside-out,
+        # invalid one. Reverse the faces themselves instead.
+        solid = Part.Solid(Part.Shell([f.reversed() for f in shell.Faces]))
     return solid
 
 
