@@ -654,6 +654,28 @@ def pocket_under_boss():
     return s, [front, side, ceiling]
 
 
+def chamfered_slot():
+    """A 24 x 27.31 x 10.57 block, its front top edge chamfered 0.8975, with a slot
+    (half-width w = 1.114, ends at x = 14.32 and 16.75, y = 14.37, 5.398 deep) whose
+    rim is chamfered 0.922 all round (a cone at each end), to full precision
+    (--random-machined 60 --seed 18, part 1). Its Edge11 and Edge14 are the straight
+    and arc edges of the rim's chamfer at the slot's end x = 16.75, on the slot's
+    wall z = 9.648."""
+    a, b, c = 24.004514177862657, 27.310714062384243, 10.569673343128155
+    s = Part.makeBox(a, b, c)
+    front = _edge_named(s, lambda e: e.BoundBox.ZMin > c - 1e-9 and e.BoundBox.YMax < 1e-9)
+    s = s.makeChamfer(0.8974937424808322, [s.getElement(front)]).removeSplitter()
+    x, y, w = 15.533548673039009, 14.369925940686885, 0.5 * 2.227652787179352
+    length, depth = 1.0934625608712991 * 2.227652787179352, 0.5106943108801498 * c
+    tool = Part.makeBox(length, 2 * w, depth + 1, V(x - 0.5 * length, y - w, c - depth))
+    for end in (-0.5, 0.5):
+        tool = tool.fuse(Part.makeCylinder(w, depth + 1, V(x + end * length, y, c - depth)))
+    s = s.cut(tool).removeSplitter()
+    rim = _edge_named(s, lambda e: isinstance(e.Curve, Part.Line) and e.BoundBox.ZMin > c - 1e-9
+                      and e.BoundBox.YLength < 1e-9 and abs(e.BoundBox.YMin - y - w) < 1e-9)
+    return s.makeChamfer(0.9219901838608635, [s.getElement(rim)]).removeSplitter()
+
+
 def box_with_void():
     """A 20 x 20 x 10 box with a closed 6 x 6 x 4 void from (7, 7, 3) (a solid of two
     shells, as a pocket closed by a boss fused over it makes: --random-machined 60

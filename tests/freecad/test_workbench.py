@@ -3900,6 +3900,34 @@ def test_a_face_whose_cut_keeps_no_piece_is_taken_from_occt_s_fillet():
     assert wall(solid) == pytest.approx(wall(occt), rel=1e-9) and wall(occt) > 60
 
 
+def test_a_guide_knot_one_ulp_before_its_end_is_its_end():
+    """shapes.chamfered_slot at R = 0.12, the survey's five edges (Edge10, 11, 13, 14
+    and 32): OCCT's fillet surface along the arc Edge14 has a knot 1 ulp before the
+    end of its section, and the piece between, 2e-15 long, was taken for the ball's
+    centre standing still ("the radius is about a face's curvature radius there, where
+    its offset has a cusp"), so every fillet was kept as OCCT's. Now such a knot is the
+    section's end (contact.KNOT_AT_END): every trimline is G2, nothing is kept, and the
+    trimline on the slot end's wall (radius w about its axis) lies where the 45 degree
+    chamfer turns the surface by pi/4, R tan(pi/8) below the wall's top edge (closed
+    forms)."""
+    s = shapes.chamfered_slot()
+    names = ["Edge10", "Edge11", "Edge13", "Edge14", "Edge32"]
+    solid, rep = C2Blend.fillet_report(s, names, 0.12)
+    assert_valid(solid)
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert not rep["kept_occt_faces"]
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    arc = s.getElement("Edge14")
+    axis, w = arc.Curve.Center, arc.Curve.Radius
+    z = axis.z - 0.12 * math.tan(math.pi / 8)
+
+    def on_wall(e):
+        pts = e.discretize(9)
+        return all(abs(math.hypot(p.x - axis.x, p.y - axis.y) - w) < 1e-6 and
+                   abs(p.z - z) < 1e-6 for p in pts)
+    assert any(on_wall(e) for e in solid.Edges)
+
+
 @pytest.mark.parametrize("which", [0, 1, None])
 def test_a_solid_with_a_void_keeps_it(which):
     """shapes.box_with_void: a solid of two shells. The sewing gives both back, closed,

@@ -46,6 +46,10 @@ MIN_SUB = 4  # ... and at least this many per section (each is halved at least o
 QUAD_REL = 1e-12  # a subinterval is halved until its halves' integrals sum to its own
 # within this fraction of the section's arc length (_refine) ...
 MAX_HALVINGS = 12  # ... at most this many times
+# a guide's knot this close to a section's end (a fraction of the section) is its end:
+# OCCT's fillet of a slot's chamfered rim put one 1 ulp before the end, and the piece
+# between, of length 2e-15, looked like a ball's centre standing still
+KNOT_AT_END = 1e-9
 TANGENT = math.radians(1.0)  # faces closer than this to tangent: a reason Newton fails
 WARM = 0.05  # start Newton from the last solution within this fraction of the section
 
@@ -240,7 +244,8 @@ class Contact:
         s = sec.rbf.surface
         knots = getattr(s, "getUKnots" if sec.rbf.along == 0 else "getVKnots", list)()
         lo, hi = sorted((sec.a_start, sec.a_end))
-        spans = sorted(set([lo, hi] + [q for q in knots if lo < q < hi]))
+        near = KNOT_AT_END * (hi - lo)
+        spans = sorted(set([lo, hi] + [q for q in knots if lo + near < q < hi - near]))
         per = max(SUB_PER_SPAN, -(-MIN_SUB // (len(spans) - 1)))
         spans = list(zip(spans, spans[1:]))
         if sec.a_end < sec.a_start:
