@@ -676,6 +676,24 @@ def chamfered_slot():
     return s.makeChamfer(0.9219901838608635, [s.getElement(rim)]).removeSplitter()
 
 
+def tall_l_block():
+    """An L block: a 16.73 x 16.17 x 17.66 box and a 0.4 x 16.73 wide column on it up
+    to twice that height (--random-edges 40 --seed 19 --turned, part 17, unturned, to
+    full precision). Returns (solid, names of its 18 edges but the column's back
+    vertical edge at x = 0.4 a, y = b and the step's concave edge at x = 0.4 a, z = c),
+    and (a, b, c)."""
+    a, b, c = 16.729006889705023, 16.1675909252352, 0.5 * 35.31673327448374
+    s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.4 * a, b, 2 * c)).removeSplitter()
+
+    def left_out(e):
+        bb = e.BoundBox
+        return abs(bb.XMin - 0.4 * a) < 1e-9 and bb.XLength < 1e-9 and (
+            (abs(bb.YMin - b) < 1e-9 and bb.YLength < 1e-9 and bb.ZMin > c - 1e-9) or
+            (bb.ZLength < 1e-9 and abs(bb.ZMin - c) < 1e-9))
+    names = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if not left_out(e)]
+    return s, names, (a, b, c)
+
+
 def box_with_void():
     """A 20 x 20 x 10 box with a closed 6 x 6 x 4 void from (7, 7, 3) (a solid of two
     shells, as a pocket closed by a boss fused over it makes: --random-machined 60

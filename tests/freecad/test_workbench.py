@@ -3900,6 +3900,34 @@ def test_a_face_whose_cut_keeps_no_piece_is_taken_from_occt_s_fillet():
     assert wall(solid) == pytest.approx(wall(occt), rel=1e-9) and wall(occt) > 60
 
 
+def test_occt_s_face_grown_past_the_original_is_replaced_by_its_cut():
+    """shapes.tall_l_block, 16 of its 18 edges at R = 3.041: the step's back edge
+    fillet ends on the column's wall x = 0.4 a, whose concave edge with the step is not
+    selected, and OCCT grows the wall down to that fillet's end section. The point
+    that decided whether OCCT's wall face is a piece of the original wall (to be
+    replaced by the wall's pieces cut anew) lay in that growth, off the original wall,
+    so both went into the sewing, which left 33 free edges, and every fillet was kept
+    as OCCT's. Now each point of a 3 x 3 grid inside it is tried (fillet._piece_of):
+    nothing is kept, every trimline is G2, the 9 corners are filled, and one face lies
+    on the wall. Its area is the rectangle between the trimlines at R from the
+    filleted edges, (b - R)(c - R) (closed form), plus the growth under the fillet's
+    end section, between 0 and R^2 / 2 (the triangle of the corner and the
+    trimlines)."""
+    s, names, (a, b, c) = shapes.tall_l_block()
+    r = 3.041
+    assert len(names) == 16
+    solid, rep = C2Blend.fillet_report(s, names, r)
+    assert_valid(solid)
+    assert not rep["kept_occt_faces"] and len(rep["corner_patches"]) == 9
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    wall = [f for f in solid.Faces if isinstance(f.Surface, Part.Plane)
+            and f.BoundBox.XLength < 1e-9 and abs(f.BoundBox.XMin - 0.4 * a) < 1e-9]
+    assert len(wall) == 1
+    rectangle = (b - r) * (c - r)
+    assert rectangle < wall[0].Area < rectangle + r * r / 2
+
+
 def test_a_guide_knot_one_ulp_before_its_end_is_its_end():
     """shapes.chamfered_slot at R = 0.12, the survey's five edges (Edge10, 11, 13, 14
     and 32): OCCT's fillet surface along the arc Edge14 has a knot 1 ulp before the

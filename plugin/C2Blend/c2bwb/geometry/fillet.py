@@ -485,6 +485,23 @@ def _probe(face):
     return face.Surface.value(*face.Surface.parameter(c))
 
 
+def _piece_of(face, origs, tol):
+    """Whether a face of OCCT's result is a piece of one of the original faces
+    `origs`: a point inside it (_probe, else one of a 3 x 3 grid, interior_points) lies
+    on one within tol. One point will not do: where a fillet ends at a concave edge,
+    OCCT grows the face beyond the original (an L block's wall under the end of its
+    step's fillet, R = 3.041: --random-edges 40 --seed 19 --turned, part 17), and the
+    probe lay in that growth, so OCCT's face was kept beside the pieces cut anew and
+    the sewing left 33 free edges."""
+    near = [o for o in origs if _boxes_meet(face.BoundBox, o.BoundBox, tol)]
+    if not near:
+        return False
+    probe = _probe(face)
+    if any(_on_face(o, probe, tol) for o in near):
+        return True
+    return any(_on_face(o, p, tol) for p in interior_points(face, 3) for o in near)
+
+
 def _original(shape, face):
     """The face of the original solid `shape` that a face of OCCT's result lies on: the
     nearest to a point inside it of those whose surface holds that point (a concave
@@ -1322,7 +1339,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         if any(f.isSame(d) for d in drop):
             continue
         if not any(f.isSame(k) for k in kept_fillets) and \
-                any(_on_face(t.orig, _probe(f), tol) for t in touched):
+                _piece_of(f, [t.orig for t in touched], tol):
             continue  # replaced by the pieces cut from the original face
         faces_out.append(f)
     shells = _sewn(faces_out)
@@ -1434,7 +1451,7 @@ def _occt_pieces(result, touched, skip, tol):
     mixed-convexity vertex), had no piece keeping the pocket's corner. Where a blend
     ends on the face, its end section is not OCCT's: None."""
     faces = [f for f in result.Faces if not any(f.isSame(x) for x in skip)
-             and _on_face(touched.orig, _probe(f), tol)]
+             and _piece_of(f, [touched.orig], tol)]
     if not faces:
         return None
     edges = Part.Compound([e for f in faces for e in f.Edges])
