@@ -4627,17 +4627,27 @@ def test_occt_exceptions_become_messages():
 
 def test_ball_centre_stopping_is_named():
     """The free-form boss's top outline at R = 1, about its outline's smallest radius of
-    curvature (1.075): the ball's centre curve has a cusp, where the contact's arc
-    length stands still. That was divided by (0/0, a NumPy warning), and the reason
-    given ended "did not converge near (nan, nan, nan)". OCCT's face is kept, and the
-    reason names the cusp and says what to do."""
+    curvature (1.075): the ball's centre moves at 1 - R / rho of the speed of its
+    contact on the boss's wall, 0.07 there, its curve bends sharply, and the boundary
+    data converge too slowly. The reason given once ended "did not converge near (nan,
+    nan, nan)" (the arc length was divided by 0/0), and later named a centre standing
+    still, from a piece of arc length 1 ulp long between a knot and a section's end
+    (contact.KNOT_AT_END). OCCT's face is kept, and the reason says the centre nearly
+    stops, at the ratio of speeds of the closed form, rho the smallest radius of
+    curvature of the outline, and what to do."""
     s, edge = shapes.freeform_boss()
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Boss")
     assert_valid(solid)
     assert not rep["blends"] and len(rep["kept_occt_faces"]) == 1
     reason = rep["kept_occt_faces"][0]["reason"]
-    assert "the rolling ball's centre stops near (" in reason and "a smaller radius" in reason
+    assert "the rolling ball's centre nearly stops near (" in reason and "a smaller radius" in reason
     assert "nan" not in reason
+    curve = s.getElement(edge).Curve
+    u0, u1 = curve.FirstParameter, curve.LastParameter
+    rho = min(1.0 / curve.curvature(u0 + (u1 - u0) * k / 20000) for k in range(20000))
+    assert rho == pytest.approx(1.075, abs=5e-4)
+    ratio = float(re.search(r"moving at ([0-9.e+-]+) times", reason).group(1))
+    assert ratio == pytest.approx(1.0 - 1.0 / rho, abs=0.006)
 
 
 def test_elliptic_boss_top_needs_more_poles():

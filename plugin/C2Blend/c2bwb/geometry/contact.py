@@ -126,6 +126,10 @@ class Contact:
         self.signs = None
         self.solved = [([], []) for _ in self.sections]  # per section: sorted a, solutions
         self.cache = {}  # arc length -> contact, shared by pairs(n) and pairs(2n)
+        # (ratio, point): the least ratio of the ball's centre's speed to its faster
+        # contact point's, near 0 where the radius nears a face's curvature radius
+        # (1 - R / rho on a wall of radius of curvature rho), and where it was seen
+        self.slowest = (math.inf, None)
         if arc_length:
             self.pieces = [p for k in range(len(self.sections)) for p in self._pieces(k)]
             self.length = self._join(self.pieces, chain.closed)
@@ -230,8 +234,14 @@ class Contact:
 
     def _gauss(self, k, a0, a1):
         """Spine arc length from guide parameter a0 to a1 in section k (Gauss), and
-        [(a, speed)] at the Gauss nodes."""
-        speeds = [(a, self.solve(k, a)[4]) for a in (a0 + (a1 - a0) * x for x, _ in _GL)]
+        [(a, speed)] at the Gauss nodes; notes the slowest the centre moves (slowest)."""
+        nodes = [(a, self.solve(k, a)) for a in (a0 + (a1 - a0) * x for x, _ in _GL)]
+        for (_, x), (_, y) in zip(nodes, nodes[1:]):
+            # the ball's centre against its faster contact point, between two nodes
+            moved = max((y[0] - x[0]).Length, (y[1] - x[1]).Length)
+            if moved > 0.0 and (y[2] - x[2]).Length < self.slowest[0] * moved:
+                self.slowest = ((y[2] - x[2]).Length / moved, (x[2] + y[2]) * 0.5)
+        speeds = [(a, sol[4]) for a, sol in nodes]
         return (a1 - a0) * sum(w * v for (_, w), (_, v) in zip(_GL, speeds)), speeds
 
     def _pieces(self, k):

@@ -71,6 +71,7 @@ JUNCTION_DATA_REL = (1e-9, 1e-10)
 # face is kept). The bound is the plate fillings' target at corners.
 JUNCTION_TURN = cn.GOOD_G1
 DATA_KEEP = 1e-6  # above this the boundary data are too rough for G2: keep OCCT's face
+SLOW_CENTRE = 0.25  # the ball's centre slower than this times its contacts: say why
 UNCHECKED = "passes BRepCheck; BOP check skipped (preview)"  # the check line, bop=False
 C0_FINDING = "GeomAbs_C0"  # the BOP check's finding on geometry that is only C0
 # the BOP check's self-interference findings, which come and go on faces only C0
@@ -262,6 +263,19 @@ class Blended:
         self.probe = surface.value(0.5 * (u0 + u1), surface.parameter(mid)[1])
 
 
+def _slow_centre(contact):
+    """Why the data may be rough, for RoughData's message: where the ball's centre
+    moves at less than SLOW_CENTRE times its contacts' speed (Contact.slowest), the
+    radius nears a face's curvature radius, and the centre's curve bends sharply
+    there; else ""."""
+    ratio, c = contact.slowest
+    if not ratio < SLOW_CENTRE:
+        return ""
+    return ("; the rolling ball's centre nearly stops near (%.6g, %.6g, %.6g), moving at "
+            "%.2g times its contacts' speed: the radius is close to a face's curvature "
+            "radius there, and a smaller radius avoids it" % (c.x, c.y, c.z, ratio))
+
+
 def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel, samples,
                max_samples, fillet_faces, target=DATA_REL, smooth=False):
     """The PDE blend replacing one rolling-ball chain or run (see bspline.solve_sampled),
@@ -284,7 +298,7 @@ def solve_face(chain, radius, where, continuity, shape_params, tension, tol_rel,
     if err > DATA_KEEP:
         raise RoughData("the boundary data sampled along the exact contact converge only "
                         "to %.1e (relative) with %d samples, too rough for an exact G2 "
-                        "blend" % (err, n))
+                        "blend%s" % (err, n, _slow_centre(contact)))
     try:
         surface, fit = fit_surface(blend, tol_rel, where)
     except C2BlendError as ex:  # the B-spline fit's limits, not the user's input
