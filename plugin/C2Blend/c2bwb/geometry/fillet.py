@@ -510,10 +510,9 @@ def _piece_of(face, origs, tol):
     near = [o for o in origs if _boxes_meet(face.BoundBox, o.BoundBox, tol)]
     if not near:
         return False
-    probe = _probe(face)
-    if any(_on_face(o, probe, tol) for o in near):
-        return True
-    return any(_on_face(o, p, tol) for p in interior_points(face, 3) for o in near)
+    # _probe is the grid's first point, when the grid has one
+    points = interior_points(face, 3) or [_probe(face)]
+    return any(_on_face(o, p, tol) for p in points for o in near)
 
 
 def _original(shape, face):
@@ -1358,9 +1357,9 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         faces_out.append(f)
     shells = _sewn(faces_out)
     fills = []  # _Fill per corner patch
-    holed = [s for s in shells if not s.isClosed()]  # those with corners to fill
     if patches and len(shells) == len(result.Shells):  # fill the holes the blends leave
-        holed = holed[0] if len(holed) == 1 else Part.Compound(holed)  # (voids have some)
+        holed = [s for s in shells if not s.isClosed()]  # (a void's shell may have some)
+        holed = holed[0] if len(holed) == 1 else Part.Compound(holed)
         try:
             loops = cn.holes(holed, patches, 0.5 * min(p.face.BoundBox.DiagonalLength
                                                        for p in patches))
@@ -1674,11 +1673,11 @@ def _closed(shells, result, where, blended, fuzzy):
         raise C2BlendError("sewing the blend faces to the solid failed: %d shell(s), %d free "
                            "edge(s) left (gaps wider than the sewing tolerance)"
                            % (len(shells), len(free)), where, "sewing")
-    shells = [_outwards(s) for s in shells]
-    solid = max(shells, key=lambda s: s.Volume)  # the outer shell, around every void
-    if len(shells) > 1:
+    solids = [_outwards(s) for s in shells]
+    solid = max(solids, key=lambda s: s.Volume)  # the outer shell's, around every void
+    if len(solids) > 1:
         solid = Part.makeSolid(Part.Compound(
-            [solid.Shells[0]] + [s.Shells[0].reversed() for s in shells if s is not solid]))
+            [solid.Shells[0]] + [s.Shells[0].reversed() for s in solids if s is not solid]))
     # every edge that cutting or sewing made anew (those of OCCT's result are as they
     # were): the blends' edges, and an original face's other edges, rebuilt by the cut
     # (a cylinder's second hole opening kept 1.5e-7 against its pcurve's 2e-7)
