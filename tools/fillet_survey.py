@@ -6,15 +6,19 @@ OCCT's validity checks on the filleted shaft-on-plate solid. With --all-edges it
 every edge of some parts instead (the corners filled, the fillets kept and why); with
 --random N, the junctions of N random parts (bosses, holes, cones, spheres on a plate);
 with --random-edges N, random sets of edges of N random blocks (corners where fillets
-meet, convex and concave). With --bop-times, the processor and clock time of OCCT's BOP
-check on a filleted pentagonal prism and on its plate fillings' neighbourhoods, which
-bopcheck's time limits allow for. With --only TEXT, the handful of typical parts is cut
+meet, convex and concave); with --random-machined N, of N blocks machined by holes,
+pockets, slots, bosses and chamfers; with --random-shafts N, of N turned parts (steps,
+tapers, grooves, bores); with --random-plates N, of N padded plates whose outlines
+have rounded corners (tangent chains), holes and pockets. With --bop-times, the
+processor and clock time of OCCT's BOP check on a filleted pentagonal prism and on its
+plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only TEXT, the handful of typical parts is cut
 down to those whose name contains TEXT (to time them). With --turned, each random part
 is turned and moved to a random placement first.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]
-       [--random N | --random-edges N | --random-machined N [--seed S] [--turned]]
+       [--random N | --random-edges N | --random-machined N | --random-shafts N |
+        --random-plates N [--seed S] [--turned]]
        [--bop-times]
 """
 import argparse
@@ -376,6 +380,105 @@ def random_machined(rng):
     return " + ".join(kinds) or "block", s, sorted(chosen, key=lambda e: int(e[4:])), r
 
 
+def random_shaft(rng):
+    """(kind, solid, names of a random set of its circular edges, radius): a turned part,
+    its profile revolved about z: 2 to 5 steps of random radius and length, each
+    shoulder square or tapered (a cone), some steps grooved (a square groove), and maybe
+    bored through, with 1 to 6 of its edges selected, at R = 3 to 15 % of its smallest
+    feature (step, shoulder, groove or wall)."""
+    steps = rng.randint(2, 5)
+    bore = rng.uniform(1.0, 2.5) if rng.random() < 0.3 else 0.0
+    radii = [rng.uniform(bore + 3, 15) for _ in range(steps)]
+    for k in range(1, steps):  # shoulders at least 1 high
+        if abs(radii[k] - radii[k - 1]) < 1:
+            radii[k] = radii[k - 1] + (1.5 if radii[k - 1] < 12 else -1.5)
+    kinds, sizes, z = ["%d steps" % steps], [min(radii) - bore], 0.0
+    pts = [(bore, 0.0), (radii[0], 0.0)]
+    for k, r in enumerate(radii):
+        length = rng.uniform(4, 15)
+        sizes.append(length)
+        if rng.random() < 0.3 and length > 6:  # a square groove in the middle of the step
+            w, d = rng.uniform(1, 0.4 * length), rng.uniform(0.5, 0.3 * (r - bore))
+            z0 = z + 0.5 * (length - w)
+            pts += [(r, z0), (r - d, z0), (r - d, z0 + w), (r, z0 + w)]
+            kinds.append("groove")
+            sizes += [w, d]
+        z += length
+        pts.append((r, z))
+        if k + 1 < steps:
+            nxt = radii[k + 1]
+            if rng.random() < 0.3:  # a tapered shoulder
+                taper = rng.uniform(1, 4)
+                pts.append((nxt, z + taper))
+                z += taper
+                kinds.append("taper")
+            else:
+                pts.append((nxt, z))
+            sizes.append(abs(nxt - r))
+    pts.append((bore, z))
+    if bore:
+        kinds.append("bore")
+    wire = Part.makePolygon([V(x, 0, y) for x, y in pts] + [V(pts[0][0], 0, pts[0][1])])
+    s = Part.Face(wire).revolve(V(0, 0, 0), V(0, 0, 1), 360)
+    s = Part.Solid(Part.Shell(s.Faces)) if s.ShapeType != "Solid" else s
+    s = s.removeSplitter()
+    edges = names(s, lambda e: not e.Degenerated and isinstance(e.Curve, Part.Circle)
+                  and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))
+    chosen = rng.sample(edges, rng.randint(1, min(6, len(edges))))
+    r = round(rng.uniform(0.03, 0.15) * min(sizes), 3)
+    return " + ".join(kinds), s, sorted(chosen, key=lambda e: int(e[4:])), r
+
+
+def random_plate(rng):
+    """(kind, solid, names of a random set of its edges, radius): a plate as sketched and
+    padded: an L, T, U or rectangular outline, some of its corners rounded (cylinders
+    tangent to the sides, so that the outline's edges form tangent chains), maybe with a
+    hole and a pocket with rounded corners, with 1 to 6 of its edges selected, at R = 5 to
+    30 % of the plate's thickness."""
+    a, b, c = rng.uniform(20, 40), rng.uniform(20, 40), rng.uniform(3, 10)
+    kind = rng.choice(["rectangle", "L", "T", "U"])
+    w = rng.uniform(0.3, 0.45)  # the arms' width, as a share of the outline's
+    outline = {"rectangle": [(0, 0), (a, 0), (a, b), (0, b)],
+               "L": [(0, 0), (a, 0), (a, w * b), (w * a, w * b), (w * a, b), (0, b)],
+               "T": [(0, 0), (a, 0), (a, w * b), ((0.5 + w / 2) * a, w * b),
+                     ((0.5 + w / 2) * a, b), ((0.5 - w / 2) * a, b),
+                     ((0.5 - w / 2) * a, w * b), (0, w * b)],
+               "U": [(0, 0), (a, 0), (a, b), ((1 - w) * a, b), ((1 - w) * a, w * b),
+                     (w * a, w * b), (w * a, b), (0, b)]}[kind]
+    s = Part.Face(Part.makePolygon([V(x, y, 0) for x, y in outline + outline[:1]]))
+    s = s.extrude(V(0, 0, c))
+    kinds, arm = [kind + " plate"], min(a, b) * (w if kind != "rectangle" else 1)
+    vertical = [e for e in s.Edges if abs(e.Vertexes[0].Point.z - e.Vertexes[1].Point.z) > 1e-9]
+    corners = [e for e in vertical if rng.random() < 0.6]
+    rounding = rng.uniform(0.1, 0.3) * arm
+    if corners:
+        try:
+            s = s.makeFillet(rounding, corners)
+            kinds.append("%d corners rounded" % len(corners))
+        except Part.OCCError:  # as a sketch's corner too tight for the rounding
+            pass
+    if rng.random() < 0.5:  # a hole through the plate's first arm
+        r = rng.uniform(1, 0.2 * arm)
+        s = s.cut(Part.makeCylinder(r, c + 2, V(0.5 * arm, 0.5 * arm, -1)))
+        kinds.append("hole")
+    if rng.random() < 0.5:  # a pocket with rounded corners near the outline's (a, 0) corner
+        pw, ph, depth = rng.uniform(0.2, 0.4) * arm, rng.uniform(0.2, 0.4) * arm, \
+            rng.uniform(0.3, 0.7) * c
+        tool = Part.makeBox(pw, ph, depth + 1, V(a - 0.5 * arm - pw / 2,
+                                                 0.5 * arm - ph / 2, c - depth))
+        tool = tool.makeFillet(rng.uniform(0.1, 0.45) * min(pw, ph),
+                               [e for e in tool.Edges if abs(e.Vertexes[0].Point.z
+                                                             - e.Vertexes[1].Point.z) > 1e-9])
+        s = s.cut(tool)
+        kinds.append("pocket")
+    s = s.removeSplitter().Solids[0]
+    edges = names(s, lambda e: not e.Degenerated
+                  and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))
+    chosen = rng.sample(edges, rng.randint(1, min(6, len(edges))))
+    r = round(rng.uniform(0.05, 0.3) * c, 3)
+    return " + ".join(kinds), s, sorted(chosen, key=lambda e: int(e[4:])), r
+
+
 def turned(make):
     """make, its part then turned about a random axis by a random angle and moved up to
     1000 away (its Placement), as a part placed in an assembly is."""
@@ -494,6 +597,11 @@ def main():
                     help="instead, fillet random sets of edges of N random blocks")
     ap.add_argument("--random-machined", type=int, metavar="N",
                     help="instead, fillet random sets of edges of N random machined blocks")
+    ap.add_argument("--random-shafts", type=int, metavar="N",
+                    help="instead, fillet random sets of circular edges of N random turned "
+                    "parts")
+    ap.add_argument("--random-plates", type=int, metavar="N",
+                    help="instead, fillet random sets of edges of N random padded plates")
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
     ap.add_argument("--turned", action="store_true",
                     help="each random part turned and moved to a random placement")
@@ -501,15 +609,12 @@ def main():
                     help="instead, time OCCT's BOP check on a filleted pentagonal prism")
     a = ap.parse_args()
     place = turned if a.turned else (lambda make: make)
-    if a.random:
-        random_survey(a.random, a.seed, place(random_part))
-        return
-    if a.random_edges:
-        random_survey(a.random_edges, a.seed, place(random_block))
-        return
-    if a.random_machined:
-        random_survey(a.random_machined, a.seed, place(random_machined))
-        return
+    for count, make in ((a.random, random_part), (a.random_edges, random_block),
+                        (a.random_machined, random_machined), (a.random_shafts, random_shaft),
+                        (a.random_plates, random_plate)):
+        if count:
+            random_survey(count, a.seed, place(make))
+            return
     if a.bop_times:
         bop_times()
         return

@@ -1018,3 +1018,14 @@ def scaled_torus_on_plate(scale=(1.5, 1.5, 1.5), z=1.0, turn=0.0):
                   key=lambda e: -e.Length)
     return s, ["Edge%d" % (i + 1) for r in rims
                for i, e in enumerate(s.Edges) if e.isSame(r)]
+
+
+def box_rounded_but_one_corner():
+    """A 20 x 20 x 6 box whose vertical edges are rounded at r = 3 (OCCT), but the one at
+    (0, 0), as a padded sketch of a rectangle with three corners rounded; and the name of
+    its top edge along y = 0. Its top outline is one tangent chain of 4 lines and 3 arcs,
+    whose two ends meet at the sharp corner (0, 0, 6)."""
+    s = Part.makeBox(20, 20, 6)
+    s = s.makeFillet(3.0, [e for e in s.Edges if e.BoundBox.ZLength > 1
+                           and (e.BoundBox.XMin > 1e-9 or e.BoundBox.YMin > 1e-9)])
+    return s, _edge_named(s, lambda e: e.BoundBox.ZMin > 6 - 1e-9 and e.BoundBox.YMax < 1e-9)

@@ -710,6 +710,38 @@ def test_mitres_on_box_top_edges():
     occt_jump(box, top, 2.0)
 
 
+def test_a_chain_whose_ends_meet_at_a_mitre():
+    """shapes.box_rounded_but_one_corner, its top edge along y = 0 at R = 1: the fillet
+    runs round the top outline, 4 lines and 3 arcs tangent to one another, 7 runs whose
+    blends meet at 6 junctions, and its two ends meet at the sharp corner (0, 0, 6) at a
+    mitre, as two chains' fillets meet on a box. That mitre was counted as a junction of
+    the chain's blends meeting at a crease (their normals pi/2 apart), and the verdict
+    was G0 (tools/fillet_survey.py --random-plates 40 --seed 1, part 6). It is a mitre:
+    not in the verdict, which is G2, with the normals pi/2 apart where it meets the sharp
+    vertical edge (the two walls' normals) and equal at the top. The junctions are G1
+    (normals within 1e-8 rad), and the blends' curvature along the chain jumps there as
+    the wall's does along the trimline on it (G2 contact), from the plane's 0 to the
+    arc's 1/3 (closed form: a horizontal circle of radius 3 on the wall)."""
+    s, edge = shapes.box_rounded_but_one_corner()
+    solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Plate")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert rep["verdict"] == "G2" and not rep["kept_occt_faces"] and not rep["corner_patches"]
+    assert len(rep["blends"]) == 7 and len(rep["trimlines"]) == 14
+    assert len(rep["junctions"]) == 6
+    for r in rep["junctions"]:
+        assert r["g1"] < ck.TOL_G1 and r["verdict"] == "G1"
+        assert sorted(r["cross_curvature"]) == [pytest.approx(0.0, abs=1e-9),
+                                                pytest.approx(1 / 3, rel=1e-4)]
+    (mitre,) = rep["mitres"]
+    assert mitre["verdict"] == "G0" and mitre["g1"] == pytest.approx(math.pi / 2, abs=1e-6)
+    e = solid.getElement(mitre["edge"])
+    low = min((v.Point for v in e.Vertexes), key=lambda p: p.z)
+    assert (low - V(0, 0, 5)).Length < 1e-6  # where the side trimlines z = 5 meet
+    for p in edge_points(e):  # in the plane bisecting the corner, by symmetry
+        assert abs(p.x - p.y) < 1e-6, p
+
+
 # 4. blend faces between coaxial cylinders -----------------------------------------------
 def coaxial():
     a, b = Part.makeCylinder(1, 2), Part.makeCylinder(0.8, 2, V(0, 0, 3))

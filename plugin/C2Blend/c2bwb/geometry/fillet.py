@@ -1951,7 +1951,7 @@ def _shared_edge_checks(solid, faces, junctions, scales):
     out = []
     for i, (b, f) in enumerate(faces):
         for o, g in faces[i + 1:]:
-            if (b.group is not None and b.group is o.group) != junctions:
+            if _consecutive(b, o) != junctions:
                 continue
             for e in f.Edges:
                 if any(e.isSame(x) for x in g.Edges):
@@ -1966,6 +1966,19 @@ def _shared_edge_checks(solid, faces, junctions, scales):
                             list(b.chain.sides) + list(o.chain.sides))
                     out.append(r)
     return out
+
+
+def _consecutive(a, b):
+    """Whether blends a and b are runs of one chain that follow one another along it
+    (solve_runs: the last run and the first of a closed chain too), and so meet at a
+    junction. The first and last runs of a chain that is not closed can also share an
+    edge: at a sharp corner of the outline that the chain runs round (a plate's top
+    edge, its corners rounded but one), where they meet at a mitre as two chains do."""
+    group = a.group
+    if group is None or group is not b.group:
+        return False
+    i, j = sorted(next(k for k, x in enumerate(group) if x is y) for y in (a, b))
+    return j - i == 1 or (a.chain.closed and (i, j) == (0, len(group) - 1))
 
 
 def _edge_near(face, vertex):
