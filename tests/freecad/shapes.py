@@ -1029,3 +1029,13 @@ def box_rounded_but_one_corner():
     s = s.makeFillet(3.0, [e for e in s.Edges if e.BoundBox.ZLength > 1
                            and (e.BoundBox.XMin > 1e-9 or e.BoundBox.YMin > 1e-9)])
     return s, _edge_named(s, lambda e: e.BoundBox.ZMin > 6 - 1e-9 and e.BoundBox.YMax < 1e-9)
+
+
+def pocket_with_rounded_corners():
+    """A 30 x 30 x 10 block with a 10 x 8 pocket 5 deep, its vertical corners rounded at
+    r = 1 (a milled pocket); and the names of the pocket floor's 8 edges (4 lines, 4
+    arcs of radius 1), one tangent chain."""
+    tool = Part.makeBox(10, 8, 6, V(10, 10, 5))
+    tool = tool.makeFillet(1.0, [e for e in tool.Edges if e.BoundBox.ZLength > 1])
+    s = Part.makeBox(30, 30, 10).cut(tool).removeSplitter().Solids[0]
+    return s, _edges_at(s, 5)

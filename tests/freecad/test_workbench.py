@@ -742,6 +742,46 @@ def test_a_chain_whose_ends_meet_at_a_mitre():
         assert abs(p.x - p.y) < 1e-6, p
 
 
+@pytest.mark.parametrize("case", ["convex", "concave"])
+def test_a_radius_past_an_arc_s_is_named_as_the_cause(case):
+    """A fillet whose radius exceeds the radius of an arc it runs along, on the arc's
+    inner side, cannot follow it: the rolling ball's centre would run past the arc's
+    centre (the inward offset of a circle by more than its radius). OCCT's fillet then
+    vanishes into a face between fillets, which is kept with the fillets around it, and
+    the reason said only that it could not be set back (tools/fillet_survey.py
+    --random-plates 40 --seed 1: 7 of 40 plates, at rounded corners of their outlines
+    and pockets). It now names the arc, its radius, the ratio R / r of the ball's
+    offset to it (closed form for faces at right angles: the offset is R) and the
+    radius below which the fillet follows it (r). Convex: the top outline of
+    shapes.box_rounded_but_one_corner (arcs of r = 3) at R = 4.5; concave: the floor of
+    shapes.pocket_with_rounded_corners (arcs of r = 1) at R = 1.5. Below r (R = 2.5 and
+    0.8) the fillet is G2, nothing kept."""
+    if case == "convex":
+        (s, edge), big, small, r = shapes.box_rounded_but_one_corner(), 4.5, 2.5, 3.0
+        edges = [edge]
+    else:
+        (s, edges), big, small, r = shapes.pocket_with_rounded_corners(), 1.5, 0.8, 1.0
+    solid, rep = C2Blend.fillet_report(s, edges, big, label="Part")
+    assert_valid(solid)
+    named = [re.search(r"; along (Edge\d+), which curves at radius ([\d.]+) toward the "
+                       r"rolling ball, the ball's centre would run ([\d.]+) times that "
+                       r"radius in, past its centre of curvature, so no fillet of this "
+                       r"radius follows it there: a radius below ([\d.]+) does", k["reason"])
+             for k in rep["kept_occt_faces"]]
+    named = [m for m in named if m]
+    assert named
+    for m in named:
+        arc = s.getElement(m.group(1))
+        assert isinstance(arc.Curve, Part.Circle) and arc.Curve.Radius == pytest.approx(r)
+        assert float(m.group(2)) == pytest.approx(r, rel=1e-3)
+        assert float(m.group(3)) == pytest.approx(big / r, rel=1e-2)
+        assert float(m.group(4)) == pytest.approx(r, rel=1e-3)
+    solid, rep = C2Blend.fillet_report(s, edges, small, label="Part")
+    assert_valid(solid)
+    assert_g2(rep)
+    assert not rep["kept_occt_faces"]
+
+
 # 4. blend faces between coaxial cylinders -----------------------------------------------
 def coaxial():
     a, b = Part.makeCylinder(1, 2), Part.makeCylinder(0.8, 2, V(0, 0, 3))

@@ -2133,6 +2133,60 @@ def _with_others(shape, edges, vertices, radius, phrase):
         % (tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in others)
 
 
+TIGHT_POINTS = 9  # per edge, where _tight_arc compares the ball's offset and the curvature
+
+
+def _tight_arc(shape, face, radius):
+    """Where OCCT's fillet vanishes into a face between fillets (`face`, of its result)
+    because an edge of `shape` near it curves tighter than the rolling ball can follow:
+    '; along EdgeN, which curves at radius rho toward the rolling ball, ...' naming the
+    edge whose ball centre runs furthest past its centre of curvature, with the largest
+    radius that follows it; '' where none does. At a point p of an edge with outward
+    normals n1 and n2, the ball touching both faces has its centre at c = p + t b, with b
+    the unit bisector, -(n1 + n2) at a convex edge (into the solid) and n1 + n2 at a
+    concave one (out of it), and t = 2 R / |n1 + n2|. Its offset toward the edge's centre of curvature, h,
+    grows with R; where h reaches the radius of curvature rho, the centres' path has a
+    cusp, as an inward offset of a circle by more than its radius, and no fillet follows
+    the edge there (a plate's outline rounded at r = 1.367, its bottom edge at R =
+    1.668: tools/fillet_survey.py --random-plates 40 --seed 1, part 37)."""
+    worst = None  # (h / rho, name, rho, largest radius that follows)
+    for k, e in enumerate(shape.Edges):
+        faces = shape.ancestorsOfType(e, Part.Face)
+        if len(faces) != 2 or e.Degenerated or e.Length == 0.0 or \
+                e.distToShape(face)[0] > 2.0 * radius:
+            continue
+        for t in ck.sample_params(e, TIGHT_POINTS):
+            try:
+                kappa = e.curvatureAt(t)
+                if kappa <= 0.0:
+                    continue
+                p, centre, tangent = e.valueAt(t), e.centerOfCurvatureAt(t), e.tangentAt(t)
+            except Part.OCCError:  # no curvature or tangent defined there
+                continue
+            n1, n2 = frame_at_point(faces[0], p).n, frame_at_point(faces[1], p).n
+            n = n1 + n2
+            if n.Length < 1e-9:
+                continue
+            # into the first face, across the edge: the edge is convex where that
+            # face falls away behind the second's tangent plane
+            d = n1.cross(tangent) * (1e-4 * radius)
+            if faces[0].distToShape(Part.Vertex(p - d))[0] < \
+                    faces[0].distToShape(Part.Vertex(p + d))[0]:
+                d = -d
+            b = n * ((-1.0 if d.dot(n2) < 0.0 else 1.0) / n.Length)
+            inward = centre - p
+            h = (b * (2.0 * radius / n.Length)).dot(inward) / inward.Length
+            rho = 1.0 / kappa
+            if h >= rho and (worst is None or h / rho > worst[0]):
+                worst = (h / rho, "Edge%d" % (k + 1), rho, radius * rho / h)
+    if worst is None:
+        return ""
+    return ("; along %s, which curves at radius %.4g toward the rolling ball, the ball's "
+            "centre would run %.3g times that radius in, past its centre of curvature, so "
+            "no fillet of this radius follows it there: a radius below %.4g does"
+            % (worst[1], worst[2], worst[0], worst[3]))
+
+
 def _vertex_hint(shape, names, face, radius):
     """CORNER_HINT for OCCT's face between two fillets at a vertex, naming the edges
     there not among `names` ([(name, Part.Edge)]) with which OCCT's fillet succeeds
@@ -2250,7 +2304,8 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                 r.setback = sb.Setback(result, r.face, fillet_faces, radius,
                                        lambda f: _original(shape, f))
             except (ValueError, Part.OCCError) as ex:
-                r.corner += " (it cannot be set back: %s)" % ex
+                r.corner += " (it cannot be set back: %s)%s" % (
+                    ex, _tight_arc(shape, r.face, radius))
                 continue
             r.patch, r.corner = True, None
     all_chains, patches = chains(rbfs)
