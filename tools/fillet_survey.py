@@ -11,9 +11,10 @@ pockets, slots, bosses and chamfers; with --random-shafts N, of N turned parts (
 tapers, grooves, bores); with --random-plates N, of N padded plates whose outlines
 have rounded corners (tangent chains), holes and pockets. With --bop-times, the
 processor and clock time of OCCT's BOP check on a filleted pentagonal prism and on its
-plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only TEXT, the handful of typical parts is cut
-down to those whose name contains TEXT (to time them). With --turned, each random part
-is turned and moved to a random placement first.
+plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only
+TEXT, the handful of typical parts is cut down to those whose name contains TEXT (to
+time them). With --turned, each random part is turned and moved to a random placement
+first.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]

@@ -2142,13 +2142,14 @@ def _tight_arc(shape, face, radius):
     '; along EdgeN, which curves at radius rho toward the rolling ball, ...' naming the
     edge whose ball centre runs furthest past its centre of curvature, with the largest
     radius that follows it; '' where none does. At a point p of an edge with outward
-    normals n1 and n2, the ball touching both faces has its centre at c = p + t b, with b
-    the unit bisector, -(n1 + n2) at a convex edge (into the solid) and n1 + n2 at a
-    concave one (out of it), and t = 2 R / |n1 + n2|. Its offset toward the edge's centre of curvature, h,
-    grows with R; where h reaches the radius of curvature rho, the centres' path has a
-    cusp, as an inward offset of a circle by more than its radius, and no fillet follows
-    the edge there (a plate's outline rounded at r = 1.367, its bottom edge at R =
-    1.668: tools/fillet_survey.py --random-plates 40 --seed 1, part 37)."""
+    normals n1 and n2, the ball touching both faces has its centre at c = p + t b, with
+    b the unit bisector, -(n1 + n2) at a convex edge (into the solid) and n1 + n2 at a
+    concave one (out of it), and t = 2 R / |n1 + n2|. Its offset toward the edge's
+    centre of curvature, h, grows with R; where h reaches the radius of curvature rho,
+    the centres' path has a cusp, as an inward offset of a circle by more than its
+    radius, and no fillet follows the edge there (a plate's outline rounded at
+    r = 1.367, its bottom edge at R = 1.668: tools/fillet_survey.py --random-plates 40
+    --seed 1, part 37)."""
     worst = None  # (h / rho, name, rho, largest radius that follows)
     for k, e in enumerate(shape.Edges):
         faces = shape.ancestorsOfType(e, Part.Face)
