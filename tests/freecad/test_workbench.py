@@ -742,7 +742,7 @@ def test_a_chain_whose_ends_meet_at_a_mitre():
         assert abs(p.x - p.y) < 1e-6, p
 
 
-@pytest.mark.parametrize("case", ["convex", "concave"])
+@pytest.mark.parametrize("case", ["convex", "concave", "beside a boss"])
 def test_a_radius_past_an_arc_s_is_named_as_the_cause(case):
     """A fillet whose radius exceeds the radius of an arc it runs along, on the arc's
     inner side, cannot follow it: the rolling ball's centre would run past the arc's
@@ -755,10 +755,19 @@ def test_a_radius_past_an_arc_s_is_named_as_the_cause(case):
     radius below which the fillet follows it (r). Convex: the top outline of
     shapes.box_rounded_but_one_corner (arcs of r = 3) at R = 4.5; concave: the floor of
     shapes.pocket_with_rounded_corners (arcs of r = 1) at R = 1.5. Below r (R = 2.5 and
-    0.8) the fillet is G2, nothing kept."""
+    0.8) the fillet is G2, nothing kept. Beside a boss: the convex case with a boss of
+    radius 0.5 on the top face at (13, 13) and R = 3.5; the boss's top edge, which the
+    fillet does not run along, curves tighter still (0.5 < 3.5) toward where a ball in
+    it would roll, and was named for the corner near it."""
     if case == "convex":
         (s, edge), big, small, r = shapes.box_rounded_but_one_corner(), 4.5, 2.5, 3.0
         edges = [edge]
+    elif case == "beside a boss":
+        (s, edge), big, small, r = shapes.box_rounded_but_one_corner(), 3.5, 2.5, 3.0
+        s = s.fuse(Part.makeCylinder(0.5, 1.0, V(13, 13, 6))).removeSplitter().Solids[0]
+        edges = [next("Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+                      if e.BoundBox.ZLength < 1e-9 and abs(e.BoundBox.ZMin - 6) < 1e-9
+                      and e.BoundBox.YMax < 1e-9)]
     else:
         (s, edges), big, small, r = shapes.pocket_with_rounded_corners(), 1.5, 0.8, 1.0
     solid, rep = C2Blend.fillet_report(s, edges, big, label="Part")

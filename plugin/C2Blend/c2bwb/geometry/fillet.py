@@ -2136,9 +2136,10 @@ def _with_others(shape, edges, vertices, radius, phrase):
 TIGHT_POINTS = 9  # per edge, where _tight_arc compares the ball's offset and the curvature
 
 
-def _tight_arc(shape, face, radius):
-    """Where OCCT's fillet vanishes into a face between fillets (`face`, of its result)
-    because an edge of `shape` near it curves tighter than the rolling ball can follow:
+def _tight_arc(shape, result, face, radius):
+    """Where OCCT's fillet (`result`) vanishes into a face between fillets (`face`)
+    because an edge of `shape` near it, which the fillet runs along (it is not an edge
+    of the result), curves tighter than the rolling ball can follow:
     '; along EdgeN, which curves at radius rho toward the rolling ball, ...' naming the
     edge whose ball centre runs furthest past its centre of curvature, with the largest
     radius that follows it; '' where none does. At a point p of an edge with outward
@@ -2154,7 +2155,8 @@ def _tight_arc(shape, face, radius):
     for k, e in enumerate(shape.Edges):
         faces = shape.ancestorsOfType(e, Part.Face)
         if len(faces) != 2 or e.Degenerated or e.Length == 0.0 or \
-                e.distToShape(face)[0] > 2.0 * radius:
+                e.distToShape(face)[0] > 2.0 * radius or \
+                any(e.isSame(x) for x in result.Edges):
             continue
         for t in ck.sample_params(e, TIGHT_POINTS):
             try:
@@ -2306,7 +2308,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                                        lambda f: _original(shape, f))
             except (ValueError, Part.OCCError) as ex:
                 r.corner += " (it cannot be set back: %s)%s" % (
-                    ex, _tight_arc(shape, r.face, radius))
+                    ex, _tight_arc(shape, result, r.face, radius))
                 continue
             r.patch, r.corner = True, None
     all_chains, patches = chains(rbfs)
