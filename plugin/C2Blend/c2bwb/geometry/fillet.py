@@ -247,14 +247,15 @@ class Blended:
     surface; face: the part of it in the solid (full_face cut back at trimmed ends, see
     ends.trim); probe: a point inside face; group: None for a whole chain's blend, or
     the pointwise blends of all runs of its chain (solve_runs), which are kept or
-    replaced together; source: the FilletChain it replaces (or a run or piece of),
+    replaced together; ring: True when that chain is closed (its last run meets its
+    first); source: the FilletChain it replaces (or a run or piece of),
     which fillet() sets, for the corner patches that chain ends at; one_side: True when
     its face reaches one trimline only (ends.cut_across_junction)."""
 
     def __init__(self, chain, ends, where, surface, fit, samples, data_rel):
         self.chain, self.ends, self.where, self.surface, self.fit = chain, ends, where, surface, fit
         self.samples, self.data_rel, self.group, self.source = samples, data_rel, None, None
-        self.one_side = False
+        self.ring = self.one_side = False
         self.full_face = self.face = Part.Face(surface)
         self.surface_diag = self.full_face.BoundBox.DiagonalLength
         sec = chain.sections[len(chain.sections) // 2]
@@ -424,7 +425,7 @@ def solve_runs(runs, closed, radius, where, continuity, tension, tol_rel, sample
                               "%.0e) did not remove: %s"
                               % (turn, JUNCTION_TURN, JUNCTION_DATA_REL[-1], why))
     for b in blends:
-        b.group = blends
+        b.group, b.ring = blends, closed
     return blends
 
 
@@ -1970,15 +1971,15 @@ def _shared_edge_checks(solid, faces, junctions, scales):
 
 def _consecutive(a, b):
     """Whether blends a and b are runs of one chain that follow one another along it
-    (solve_runs: the last run and the first of a closed chain too), and so meet at a
-    junction. The first and last runs of a chain that is not closed can also share an
+    (solve_runs: the last run and the first of a closed chain too, Blended.ring; a
+    run's own chain attribute is the run, never closed), and so meet at a junction. The first and last runs of a chain that is not closed can also share an
     edge: at a sharp corner of the outline that the chain runs round (a plate's top
     edge, its corners rounded but one), where they meet at a mitre as two chains do."""
     group = a.group
     if group is None or group is not b.group:
         return False
     i, j = sorted(next(k for k, x in enumerate(group) if x is y) for y in (a, b))
-    return j - i == 1 or (a.chain.closed and (i, j) == (0, len(group) - 1))
+    return j - i == 1 or (a.ring and (i, j) == (0, len(group) - 1))
 
 
 def _edge_near(face, vertex):
