@@ -420,9 +420,7 @@ def random_shaft(rng):
     if bore:
         kinds.append("bore")
     wire = Part.makePolygon([V(x, 0, y) for x, y in pts] + [V(pts[0][0], 0, pts[0][1])])
-    s = Part.Face(wire).revolve(V(0, 0, 0), V(0, 0, 1), 360)
-    s = Part.Solid(Part.Shell(s.Faces)) if s.ShapeType != "Solid" else s
-    s = s.removeSplitter()
+    s = Part.Face(wire).revolve(V(0, 0, 0), V(0, 0, 1), 360).removeSplitter()
     edges = names(s, lambda e: not e.Degenerated and isinstance(e.Curve, Part.Circle)
                   and not any(e.isSeam(f) for f in s.ancestorsOfType(e, Part.Face)))
     chosen = rng.sample(edges, rng.randint(1, min(6, len(edges))))
@@ -449,8 +447,7 @@ def random_plate(rng):
     s = Part.Face(Part.makePolygon([V(x, y, 0) for x, y in outline + outline[:1]]))
     s = s.extrude(V(0, 0, c))
     kinds, arm = [kind + " plate"], min(a, b) * (w if kind != "rectangle" else 1)
-    vertical = [e for e in s.Edges if abs(e.Vertexes[0].Point.z - e.Vertexes[1].Point.z) > 1e-9]
-    corners = [e for e in vertical if rng.random() < 0.6]
+    corners = [e for e in s.Edges if e.BoundBox.ZLength > 1e-9 and rng.random() < 0.6]
     rounding = rng.uniform(0.1, 0.3) * arm
     if corners:
         try:
@@ -468,8 +465,7 @@ def random_plate(rng):
         tool = Part.makeBox(pw, ph, depth + 1, V(a - 0.5 * arm - pw / 2,
                                                  0.5 * arm - ph / 2, c - depth))
         tool = tool.makeFillet(rng.uniform(0.1, 0.45) * min(pw, ph),
-                               [e for e in tool.Edges if abs(e.Vertexes[0].Point.z
-                                                             - e.Vertexes[1].Point.z) > 1e-9])
+                               [e for e in tool.Edges if e.BoundBox.ZLength > 1e-9])
         s = s.cut(tool)
         kinds.append("pocket")
     s = s.removeSplitter().Solids[0]

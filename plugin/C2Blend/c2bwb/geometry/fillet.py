@@ -1972,9 +1972,10 @@ def _shared_edge_checks(solid, faces, junctions, scales):
 def _consecutive(a, b):
     """Whether blends a and b are runs of one chain that follow one another along it
     (solve_runs: the last run and the first of a closed chain too, Blended.ring; a
-    run's own chain attribute is the run, never closed), and so meet at a junction. The first and last runs of a chain that is not closed can also share an
-    edge: at a sharp corner of the outline that the chain runs round (a plate's top
-    edge, its corners rounded but one), where they meet at a mitre as two chains do."""
+    run's own chain attribute is the run, never closed), and so meet at a junction.
+    The first and last runs of a chain that is not closed can also share an edge: at a
+    sharp corner of the outline that the chain runs round (a plate's top edge, its
+    corners rounded but one), where they meet at a mitre as two chains do."""
     group = a.group
     if group is None or group is not b.group:
         return False
@@ -2156,8 +2157,8 @@ def _tight_arc(shape, result, face, radius):
     for k, e in enumerate(shape.Edges):
         faces = shape.ancestorsOfType(e, Part.Face)
         if len(faces) != 2 or e.Degenerated or e.Length == 0.0 or \
-                e.distToShape(face)[0] > 2.0 * radius or \
-                any(e.isSame(x) for x in result.Edges):
+                any(e.isSame(x) for x in result.Edges) or \
+                e.distToShape(face)[0] > 2.0 * radius:
             continue
         for t in ck.sample_params(e, TIGHT_POINTS):
             try:
