@@ -1039,3 +1039,25 @@ def pocket_with_rounded_corners():
     tool = tool.makeFillet(1.0, [e for e in tool.Edges if e.BoundBox.ZLength > 1])
     s = Part.makeBox(30, 30, 10).cut(tool).removeSplitter().Solids[0]
     return s, _edges_at(s, 5)
+
+
+def three_slots():
+    """A 39.24 x 39.62 x 9.757 block with three slots of rounded ends (half-widths 3.547,
+    3.569 and 0.7777; the last crosses the second's end), to full precision
+    (--random-machined 40 --seed 24, part 19). OCCT's fillet of some of its edges at a
+    small radius (R = 0.03) leaves tiny edges where the fillets end at the slots' walls,
+    which its own result fails the BOP check for."""
+    a, b, c = 39.2359917278954, 39.62043672760976, 9.75710061866642
+    s = Part.makeBox(a, b, c)
+    for r, x, y, k, f in ((7.093420698406275, 15.044503806939238, 24.8208131338423,
+                           1.0999193534611202, 0.4735498618840003),
+                          (7.137447887877721, 28.354941432989456, 29.97343347750087,
+                           1.3243236838912922, 0.3379318708744775),
+                          (1.5553725497957327, 27.8557426162698, 8.149058598359808,
+                           1.0761853962136145, 0.6681804501210956)):
+        w, length, depth = 0.5 * r, k * r, f * c
+        tool = Part.makeBox(length, 2 * w, depth + 1, V(x - 0.5 * length, y - w, c - depth))
+        for end in (-0.5, 0.5):
+            tool = tool.fuse(Part.makeCylinder(w, depth + 1, V(x + end * length, y, c - depth)))
+        s = s.cut(tool).removeSplitter()
+    return s
