@@ -33,8 +33,10 @@ typedef struct c2b_tolerances {
     double truncation_rel;
     /** Relative tolerance of the exact-structure tests (polynomial in v, f''=beta f). */
     double structure_rel;
-    /** Modes whose amplitude is below this fraction of the data scale are dropped
-     *  (FFT rounding noise is a few 1e-15); the error they leave is measured. */
+    /** Modes whose amplitude is below this fraction of the data's half-range (not
+     *  their magnitude, which moving the part changes), or below the rounding of their
+     *  magnitude, are dropped (FFT rounding noise is a few 1e-15); the error they
+     *  leave is measured. */
     double drop_rel;
     /** Highest polynomial degree in v recognised exactly. */
     int max_poly_degree;

@@ -1061,3 +1061,13 @@ def three_slots():
             tool = tool.fuse(Part.makeCylinder(w, depth + 1, V(x + end * length, y, c - depth)))
         s = s.cut(tool).removeSplitter()
     return s
+
+
+def rounded_plate(r=0.3):
+    """A 20 x 20 x 6 plate whose four vertical edges are rounded at r (OCCT), and the name
+    of its top edge along y = 0: its top outline is one tangent chain of 4 lines and 4
+    arcs of radius r."""
+    s = Part.makeBox(20, 20, 6)
+    s = s.makeFillet(r, [e for e in s.Edges if e.BoundBox.ZLength > 1])
+    return s, _edge_named(s, lambda e: e.BoundBox.ZMin > 6 - 1e-9 and e.BoundBox.YMax < 1e-9
+                          and e.BoundBox.XLength > 1)

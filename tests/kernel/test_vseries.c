@@ -187,6 +187,62 @@ static void test_end_slopes(void)
     }
 }
 
+static double fwave(double v) { return 0.3 * sin(2 * v + 0.4) * exp(0.5 * v); }
+static double fwave_v(double v)
+{
+    return 0.3 * (2 * cos(2 * v + 0.4) + 0.5 * sin(2 * v + 0.4)) * exp(0.5 * v);
+}
+
+/* The same slopes 1000 from the origin, where a part may lie: the samples carry the
+ * rounding of their magnitude (1.1e-13), which the end polynomial's second derivatives
+ * amplify by H^-2 (the stencils' spacing widens where that noise dominates), and the
+ * terms dropped are measured against the data's half-range, not their magnitude. The
+ * closed-form derivative is the reference. The slopes must stay within 1e-9 of their
+ * scale of those of the same data at the origin: a normal tilted by 1e-9 rad, a tenth of
+ * the G2 criterion's 1e-8 (a fillet run 933 from the origin, 0.77 long, was tilted by
+ * 1.4e-8 rad at its end). Against the magnitude and at spacing h alone, the three slopes
+ * were off by 1.3e-8, 3.5e-8 and 3.5e-9 of their scale. */
+static void test_end_slopes_far_from_origin(void)
+{
+    static const struct {
+        const char *name;
+        fn1 f, fv;
+        double len, fv_scale;
+        int n;
+    } cases[] = {
+        {"60 degree arc, r = 2, on [0, 1.11]", farc, farc_v, 1.11, 1.886, 513},
+        {"0.3 sin(2v + 0.4) e^(v/2) on [0, 0.727]", fwave, fwave_v, 0.727, 0.88, 513},
+        {"exp(cos 3v) on [0, 2]", fsmooth, fsmooth_v, 2.0, 3 * 2.718281828, 257},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        static double smp[513];
+        c2b_vdomain d = {0, cases[c].len, 0};
+        double e[2] = {0, 0};
+        int ok = 1;
+        for (int far = 0; far < 2 && ok; far++) {
+            c2b_vseries s;
+            c2b_error err;
+            for (int i = 0; i < cases[c].n; i++)
+                smp[i] = (far ? 1000 : 0) + cases[c].f(cases[c].len * i / (cases[c].n - 1));
+            memset(&s, 0, sizeof s);
+            ok = c2b_vseries_project_samples(&d, smp, 1, cases[c].n, NULL, &s, &err) == C2B_OK;
+            for (int end = 0; ok && end < 2; end++) {
+                double y[2];
+                c2b_vseries_eval(&s, &d, end * cases[c].len, 1, y);
+                e[far] = fmax(e[far], fabs(y[1] - cases[c].fv(end * cases[c].len)) / cases[c].fv_scale);
+            }
+            c2b_vseries_clear(&s);
+        }
+        char what[200];
+        snprintf(what, sizeof what, "1000 + %s, %d samples: expanded", cases[c].name, cases[c].n);
+        if (!check_true(what, ok))
+            continue;
+        snprintf(what, sizeof what, "1000 + %s, %d samples: slope at the ends (relative; %.3g at "
+                 "the origin)", cases[c].name, cases[c].n, e[0]);
+        check_le(what, e[1], e[0] + 1e-9);
+    }
+}
+
 /* Fine sampling and fast data: the fourth derivatives of the end polynomial come from
  * the stencil spacing whose estimate agrees best with twice that spacing's (on fine
  * samples rounding noise grows like h^-4), and are dropped where no two spacings agree
@@ -330,6 +386,7 @@ int main(void)
     test_structures();
     test_sample_error_estimate();
     test_end_slopes();
+    test_end_slopes_far_from_origin();
     test_end_polynomial_robust();
     test_bad_samples();
     test_k200_blend();

@@ -47,7 +47,13 @@ from .surface import angle, frame_at_point
 # 4.4 s.
 FILL = {"Degree": 5, "MaximumSegments": 12, "Iterations": 1, "Tolerance3d": 1e-6,
         "TolAngular": 1e-4}
-TRIALS = ((12, 30), (10, 30), (13, 30), (12, 40), (10, 40), (13, 40))
+# Where no plate solved once is fit to keep (each bulges beyond a plane it is tangent to,
+# or turns from the faces by more than MAX_SEAM), the same are solved twice: at a
+# setback corner (shapes.step at R = 1), every plate solved once bulged 0.028 R to 3.4 R
+# above the top face once the blends moved by 2e-13 (their turn: 3.9e-3 to 0.16 rad),
+# and every plate solved twice stayed below it, turning by 1.0e-3 to 5.3e-3 rad.
+_SIZES = ((12, 30), (10, 30), (13, 30), (12, 40), (10, 40), (13, 40))
+TRIALS = tuple(s + (1,) for s in _SIZES) + tuple(s + (2,) for s in _SIZES)
 GOOD_G1 = 2e-5  # rad
 # rad: a plate turning further from the faces around its hole does not fill it (at a
 # corner where blends end 1e-4 from a fillet kept as OCCT's, one folded over, 2 rad,
@@ -55,6 +61,7 @@ GOOD_G1 = 2e-5  # rad
 # gusset bracket at R = 0.5)
 MAX_SEAM = 1e-2
 SEAM_POINTS = 21  # per edge, where a filling's seams are measured
+BULGE_GRID = 16  # intervals per parameter where a filling's bulge is measured
 
 
 class Unfilled(Exception):
@@ -84,8 +91,11 @@ def holes(shell, patches, tol):
 def fill(shell, edges, trials=TRIALS, crease=None):
     """(face, trial): the face filling the hole bounded by `edges` (free edges of
     `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with each
-    (maximum degree, points per edge) of `trials` tried until a seam is within
-    GOOD_G1, the best kept; through the edges on `crease` (an edge, or None) only, not
+    (maximum degree, points per edge, iterations) of `trials` tried until a seam is
+    within GOOD_G1, the best kept, those solved twice only where none solved once is fit
+    to keep (TRIALS). A filling that rises beyond a plane it is tangent to by more than
+    twice its seams' gap ranks after every one that does not. Through the edges on
+    `crease` (an edge, or None) only, not
     tangent there (a setback corner's edge on the face whose rim stays sharp,
     setback.py). Built in a hidden temporary document, which is closed again; the
     active document is left as it was. Raises Unfilled."""
@@ -102,12 +112,17 @@ def fill(shell, edges, trials=TRIALS, crease=None):
             j = next(i for i, x in enumerate(shell.Faces) if x.isSame(f))
             names.append((holder, "Edge%d" % (k + 1)))
             faces.append("Face%d" % (j + 1))
-        best = None  # (worst seam angle, face, trial)
+        tangent = [e for e, k in zip(edges, orders) if k]
+        planes = _planes(shell, tangent, edges)
+        best = None  # ((bulges, worst seam angle), face, trial)
         for trial in trials:
+            if trial[2] > FILL["Iterations"] and best is not None and not best[0][0] and \
+                    best[0][1] <= MAX_SEAM:
+                break  # a filling of the first kind is fit to keep
             filling = doc.addObject("Surface::Filling", "Fill")
             for key, value in FILL.items():
                 setattr(filling, key, value)
-            filling.MaximumDegree, filling.PointsOnCurve = trial
+            filling.MaximumDegree, filling.PointsOnCurve, filling.Iterations = trial
             filling.BoundaryEdges = names
             filling.BoundaryFaces = faces
             filling.BoundaryOrder = orders  # 1: tangent to the edge's face
@@ -116,16 +131,18 @@ def fill(shell, edges, trials=TRIALS, crease=None):
             if result.isNull() or len(result.Faces) != 1 or not result.isValid():
                 continue
             face = result.Faces[0].copy()
-            turn = _seam_angle(face, shell, [e for e, k in zip(edges, orders) if k])
-            if best is None or turn < best[0]:
-                best = (turn, face, trial)
-            if turn <= GOOD_G1:
+            turn, gap = _seam(face, shell, tangent)
+            rank = (_bulge(face, planes) > 2.0 * gap + 1e-7 * face.BoundBox.DiagonalLength,
+                    turn)
+            if best is None or rank < best[0]:
+                best = (rank, face, trial)
+            if not rank[0] and turn <= GOOD_G1:
                 break
         if best is None:
             raise Unfilled("OCCT's plate filling of its %d-sided hole failed" % len(edges))
-        if best[0] > MAX_SEAM:
+        if best[0][1] > MAX_SEAM:
             raise Unfilled("OCCT's plate filling of its %d-sided hole turns from the faces "
-                           "around it by %.2g rad at best" % (len(edges), best[0]))
+                           "around it by %.2g rad at best" % (len(edges), best[0][1]))
         return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
@@ -160,13 +177,14 @@ def _in_order(edges):
     return out
 
 
-def _seam_angle(face, shell, edges):
-    """The largest angle (rad) between the normals of a filling `face` and of the
-    shell's faces along `edges`, at SEAM_POINTS per edge, with the filling turned once
-    for all to face the shell's way (where its normal agrees with the shell's over most
-    of the seam): a plate folded over along part of its seam is then about pi off there,
-    where a point-by-point choice of side would hide it."""
-    pairs = []
+def _seam(face, shell, edges):
+    """(angle, gap): the largest angle (rad) between the normals of a filling `face` and
+    of the shell's faces along `edges`, and the largest distance between the edges and
+    the filling, at SEAM_POINTS per edge, with the filling turned once for all to face
+    the shell's way (where its normal agrees with the shell's over most of the seam): a
+    plate folded over along part of its seam is then about pi off there, where a
+    point-by-point choice of side would hide it."""
+    pairs, gap = [], 0.0
     for e in edges:
         f = shell.ancestorsOfType(e, Part.Face)[0]
         ga = gb = None  # each projection starts from the previous point's, along the edge
@@ -175,5 +193,37 @@ def _seam_angle(face, shell, edges):
             a, b = frame_at_point(face, p, ga), frame_at_point(f, p, gb)
             ga, gb = (a.u, a.v), (b.u, b.v)
             pairs.append((a.n, b.n))
+            gap = max(gap, (a.p - p).Length)
     side = 1.0 if sum(a.dot(b) for a, b in pairs) >= 0.0 else -1.0
-    return max(angle(a * side, b) for a, b in pairs)
+    return max(angle(a * side, b) for a, b in pairs), gap
+
+
+def _planes(shell, tangent, edges):
+    """[(point, normal)] of the planar faces of the shell along the `tangent` edges of a
+    hole bounded by `edges`, each normal pointing away from the hole: to the side of the
+    plane opposite the hole's edges that leave it (the edges of a hole lie on one side of
+    a plane that its filling is tangent to, or on it)."""
+    out = []
+    for e in tangent:
+        f = shell.ancestorsOfType(e, Part.Face)[0]
+        if not f.Surface.isPlanar() or any(f.isSame(g) for g, _, _ in out):
+            continue
+        p = e.valueAt(e.FirstParameter)
+        n = f.Surface.normal(*f.Surface.parameter(p))
+        off = sum((x.valueAt(x.FirstParameter + (x.LastParameter - x.FirstParameter) * k) - p)
+                  .dot(n) for x in edges for k in (0.25, 0.5, 0.75))
+        out.append((f, p, -n if off > 0.0 else n))
+    return [(p, n) for _, p, n in out]
+
+
+def _bulge(face, planes):
+    """How far (model units, 0 if not at all) a filling `face` rises beyond the planes
+    (_planes) it should stay behind, at the points of a BULGE_GRID x BULGE_GRID grid
+    of its parameters that lie on it."""
+    if not planes:
+        return 0.0
+    u0, u1, v0, v1 = face.ParameterRange
+    grid = [(u0 + (u1 - u0) * i / BULGE_GRID, v0 + (v1 - v0) * j / BULGE_GRID)
+            for i in range(BULGE_GRID + 1) for j in range(BULGE_GRID + 1)]
+    points = [face.Surface.value(u, v) for u, v in grid if face.isPartOfDomain(u, v)]
+    return max([0.0] + [(q - p).dot(n) for p, n in planes for q in points])
