@@ -301,8 +301,6 @@ static c2b_status try_mode(const c2b_vdomain *dom, c2b_vt_fn f, void *ctx, doubl
     return C2B_OK;
 }
 
-/* Periodic: amplitudes from n samples (n even or odd), dropping small ones.
- * spec: fftw output buffer of n/2+1. Terms appended to out. */
 /* Amplitude below which a series term is dropped: drop_rel times the half-range of the n
  * values y (stride apart), which moving the part does not change, but at least the
  * rounding of their magnitude (DBL_EPSILON times max |y|), below which terms are noise.
@@ -319,6 +317,8 @@ static double drop_level(const double *y, ptrdiff_t stride, int n, double drop_r
     return fmax(drop_rel * 0.5 * (hi - lo), DBL_EPSILON * fmax(fabs(lo), fabs(hi)));
 }
 
+/* Periodic: amplitudes from n samples (n even or odd), dropping small ones.
+ * spec: fftw output buffer of n/2+1. Terms appended to out. */
 static int fft_terms(const fftw_complex *X, int n, double L, double drop, c2b_vseries *out)
 {
     double a0 = X[0][0] / n;

@@ -30,8 +30,9 @@ from .surface import angle, frame_at_point
 # 1.2e-3 rad at every degree and 40 points 2.4e-5 to 4.5e-4; at a spline block's top
 # corner 30 points gave 1.8e-4 to 1.1e-3 rad, and a plate that OCCT's BOP check finds
 # self-intersecting, at every degree from 6 to 14, and 40 points 5e-5 to 1.5e-4 rad
-# and none. So each (maximum degree, points per edge) of TRIALS is tried in turn until
-# a seam is within GOOD_G1, keeping the best: one to three on a box's corners.
+# and none. So each (maximum degree, points per edge) of TRIALS, solved once, is tried
+# in turn until a seam is within GOOD_G1, keeping the best: one to three on a box's
+# corners.
 # The plate is solved once (Iterations 1; FreeCAD's default, 2, solves it again on the
 # first one): solved twice, the spline block's corner near (0, 0, 15) turned from its
 # blends by 3.8e-4 to 1.1e-3 rad over the trials, and by 4.4e-3 to 9.4e-3 rad once
@@ -114,6 +115,7 @@ def fill(shell, edges, trials=TRIALS, crease=None):
             faces.append("Face%d" % (j + 1))
         tangent = [e for e, k in zip(edges, orders) if k]
         planes = _planes(shell, tangent, edges)
+        size = Part.Compound(edges).BoundBox.DiagonalLength
         best = None  # ((bulges, worst seam angle), face, trial)
         for trial in trials:
             if trial[2] > FILL["Iterations"] and best is not None and not best[0][0] and \
@@ -132,8 +134,7 @@ def fill(shell, edges, trials=TRIALS, crease=None):
                 continue
             face = result.Faces[0].copy()
             turn, gap = _seam(face, shell, tangent)
-            rank = (_bulge(face, planes) > 2.0 * gap + 1e-7 * face.BoundBox.DiagonalLength,
-                    turn)
+            rank = (_bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
             if best is None or rank < best[0]:
                 best = (rank, face, trial)
             if not rank[0] and turn <= GOOD_G1:
