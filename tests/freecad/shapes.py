@@ -1043,10 +1043,12 @@ def pocket_with_rounded_corners():
 
 def three_slots():
     """A 39.24 x 39.62 x 9.757 block with three slots of rounded ends (half-widths 3.547,
-    3.569 and 0.7777; the last crosses the second's end), to full precision
-    (--random-machined 40 --seed 24, part 19). OCCT's fillet of some of its edges at a
-    small radius (R = 0.03) leaves tiny edges where the fillets end at the slots' walls,
-    which its own result fails the BOP check for."""
+    3.569 and 0.7777; the rounded ends of the first two overlap), to full precision
+    (--random-machined 40 --seed 24, part 19). Its Edge41 and Edge56 are arcs of the
+    second slot's floor where the first one crosses it, a convex and a concave edge
+    meeting at a vertex; OCCT's fillet of them at R = 0.03 passes isValid() but fails
+    its own BOP check (12 tiny edges, 12 self-intersecting vertices, 2 curves off their
+    faces)."""
     a, b, c = 39.2359917278954, 39.62043672760976, 9.75710061866642
     s = Part.makeBox(a, b, c)
     for r, x, y, k, f in ((7.093420698406275, 15.044503806939238, 24.8208131338423,

@@ -2520,10 +2520,10 @@ def bop_findings(shape):
 
 
 def test_bop_findings_that_occts_own_fillet_has_do_not_fail_the_fillet():
-    """Three slots in a block (shapes.three_slots), a top edge (Edge3) and two arcs of
-    the slots' rims where a convex and a concave fillet meet (Edge41, Edge56) at
-    R = 0.03. OCCT's fillet of them passes isValid() but fails its own BOP check (tiny
-    edges and self-intersecting vertices where the arcs' fillets end). The top edge's
+    """Three slots in a block (shapes.three_slots), a top edge (Edge3) and the two arcs
+    where the first two slots cross (Edge41, Edge56, convex and concave) at R = 0.03.
+    OCCT's fillet of them passes isValid() but fails its own BOP check (tiny edges and
+    self-intersecting vertices); the arcs' fillets are kept as OCCT's. The top edge's
     blend is G2; the solid sewn with it has exactly OCCT's findings, none around the
     blend, so the solid is returned with them named, as FreeCAD's Fillet returns OCCT's
     (the whole fillet failed with "the filleted solid is not valid after sewing")."""

@@ -1562,8 +1562,8 @@ def _as_occt_fillet(problems, solid, result):
     (`problems`, none of them around a blend or plate filling: _bop_faulty) are no
     more, of each kind, than on OCCT's own fillet `result` of the same edges, which
     FreeCAD's Fillet returns: they lie in what the solid keeps of OCCT's fillet (tiny
-    edges where fillets of a small radius end at a slot's walls: a machined block's
-    slots at R = 0.03, shapes.three_slots), and that fillet would have them too. None
+    edges and self-intersecting vertices where two arcs of crossing slots are filleted
+    at R = 0.03, shapes.three_slots), and that fillet would have them too. None
     otherwise, and when OCCT's fillet passes or its check does not finish."""
     if bc.problems(solid, bop=False) is not None:
         return None
