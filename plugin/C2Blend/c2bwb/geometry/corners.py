@@ -46,15 +46,15 @@ from .surface import angle, frame_at_point
 # poles count) made it take 9.5 s, not under 2 s. MaximumSegments 20 gave better seams
 # still, but plates that made OCCT's BOP check of a box with 12 fillets take 10 s, not
 # 4.4 s.
-FILL = {"Degree": 5, "MaximumSegments": 12, "Iterations": 1, "Tolerance3d": 1e-6,
-        "TolAngular": 1e-4}
+FILL = {"Degree": 5, "MaximumSegments": 12, "Tolerance3d": 1e-6, "TolAngular": 1e-4}
+ONCE, TWICE = 1, 2  # a trial's Iterations: the plate solved once, or solved again
 # Where no plate solved once is fit to keep (each bulges beyond a plane it is tangent to,
 # or turns from the faces by more than MAX_SEAM), the same are solved twice: at a
 # setback corner (shapes.step at R = 1), every plate solved once bulged 0.028 R to 3.4 R
 # above the top face once the blends moved by 2e-13 (their turn: 3.9e-3 to 0.16 rad),
 # and every plate solved twice stayed below it, turning by 1.0e-3 to 5.3e-3 rad.
 _SIZES = ((12, 30), (10, 30), (13, 30), (12, 40), (10, 40), (13, 40))
-TRIALS = tuple(s + (1,) for s in _SIZES) + tuple(s + (2,) for s in _SIZES)
+TRIALS = tuple(s + (ONCE,) for s in _SIZES) + tuple(s + (TWICE,) for s in _SIZES)
 GOOD_G1 = 2e-5  # rad
 # rad: a plate turning further from the faces around its hole does not fill it (at a
 # corner where blends end 1e-4 from a fillet kept as OCCT's, one folded over, 2 rad,
@@ -118,7 +118,7 @@ def fill(shell, edges, trials=TRIALS, crease=None):
         size = Part.Compound(edges).BoundBox.DiagonalLength
         best = None  # ((bulges, worst seam angle), face, trial)
         for trial in trials:
-            if trial[2] > FILL["Iterations"] and best is not None and not best[0][0] and \
+            if trial[2] == TWICE and best is not None and not best[0][0] and \
                     best[0][1] <= MAX_SEAM:
                 break  # a filling of the first kind is fit to keep
             filling = doc.addObject("Surface::Filling", "Fill")
