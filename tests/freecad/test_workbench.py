@@ -750,7 +750,7 @@ def test_a_rounded_outline_far_from_the_origin_is_g2(placed):
     sine series. Placed 933 from the origin and turned, as a part in an
     assembly, the samples carry the rounding of that magnitude. Against it, the kernel
     dropped the series' terms below 1e-11, and the slopes that went with them tilted
-    the blends' normals at the runs' ends by up to 2.0e-8 rad at a trimline and 2.7e-8
+    the blends' normals at the runs' ends by up to 1.5e-8 rad at a trimline and 2.0e-8
     at a junction: G0 (tools/fillet_survey.py --random-plates 40 --seed 2 --turned,
     part 35: 1.2e-8). Placed anywhere, the outline is G2 with junctions G1."""
     s, edge = shapes.rounded_plate(0.3)
