@@ -4045,6 +4045,47 @@ def test_where_a_hole_cuts_a_pocket_s_wall_its_rim_and_the_floor_s_edges_are_set
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
+@pytest.mark.parametrize("radius", [0.15, 0.3])
+def test_a_rim_ending_on_two_pieces_of_one_wall_grows_each(radius):
+    """shapes.hole_through_pocket_wall, the hole's rim on the floor alone (its two
+    arcs, one chain): the hole cuts the pocket's wall y = 15 in two faces on one plane,
+    and the rim's fillet ends on each, below the floor. Both end sections were taken
+    to lie on the first of the two (Face12), off its corners, and the fillet was kept
+    as OCCT's (--random-machined 40 --seed 24, part 2). Each now grows its own piece
+    of the wall down to the hole's trimline, z = 6 - R. Closed forms: the floor's
+    trimline is the circle r = 2.5 + R about the hole's axis, the hole's is r = 2.5 at
+    z = 6 - R, so each piece gains a vertex at x = 6 -+ sqrt((2.5 + R)^2 - 0.5^2), z =
+    6 and one at x = 6 -+ sqrt(2.5^2 - 0.5^2), z = 6 - R; the region it gains lies
+    within the triangle of its two legs. The G2 section stays nearer the edge than the
+    rolling ball's arc, so the solid keeps more than OCCT's fillet does."""
+    s, names, _ = shapes.hole_through_pocket_wall()
+    rim = [n for n in names if isinstance(s.getElement(n).Curve, Part.Circle)]
+    assert len(rim) == 2
+    solid, rep = C2Blend.fillet_report(s, rim, radius)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == [] and len(rep["blends"]) == 1
+    assert len(rep["trimlines"]) == 2 and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+    def wall(shape):
+        return [f for f in shape.Faces if isinstance(f.Surface, Part.Plane)
+                and f.BoundBox.YLength < 1e-9 and abs(f.BoundBox.YMin - 15) < 1e-9
+                and f.BoundBox.XMax < 9 + 1e-9 and f.BoundBox.XMin > 3 - 1e-9]
+    before, after = wall(s), wall(solid)
+    assert len(before) == len(after) == 2
+    floor_x, hole_x = math.sqrt((2.5 + radius) ** 2 - 0.25), math.sqrt(6.0)
+    for d in (-1, 1):
+        old = next(f for f in before if (f.CenterOfMass.x - 6) * d > 0)
+        new = next(f for f in after if (f.CenterOfMass.x - 6) * d > 0)
+        for p in (V(6 + d * floor_x, 15, 6), V(6 + d * hole_x, 15, 6 - radius)):
+            assert min((v.Point - p).Length for v in new.Vertexes) < 1e-6, p
+        assert new.BoundBox.ZMin == pytest.approx(6 - radius, abs=1e-6)
+        gained = new.Area - old.Area
+        assert 0 < gained < 0.5 * (floor_x - hole_x) * radius
+    occt = s.makeFillet(radius, [s.getElement(n) for n in rim])
+    assert occt.Volume < solid.Volume < s.Volume
+
+
 def test_a_face_whose_cut_keeps_no_piece_is_taken_from_occt_s_fillet():
     """shapes.pocket_under_boss at R = 0.281: the fillets where the boss's side meets
     the pocket's wall, and that wall meets the pocket's ceiling under the boss, are

@@ -754,12 +754,16 @@ def _edge_points(edge, fractions=(0.25, 0.5, 0.75)):
 
 
 def _face_under(edge, faces, tol):
-    """The first of `faces` whose surface holds the edge (at its inner points, within tol
-    or 10x the edge's tolerance), or None."""
+    """The one of `faces` whose surface holds the edge (at its inner points, within tol
+    or 10x the edge's tolerance), the nearest to the edge where several do, or None.
+    Two faces of a chain's ends may share a plane: a hole cutting a pocket's wall
+    leaves two pieces of it, and the rim fillet's end sections lie one on each."""
     pts = _edge_points(edge)
     tol = max(tol, 10.0 * edge.Tolerance)
-    return next((f for f in faces if all(off_surface(f.Surface, p) <= tol for p in pts)),
-                None)
+    holding = [f for f in faces if all(off_surface(f.Surface, p) <= tol for p in pts)]
+    if len(holding) < 2:
+        return next(iter(holding), None)
+    return min(holding, key=lambda f: f.distToShape(edge)[0])
 
 
 def _edge_on_face(edge, face, tol):
