@@ -4724,43 +4724,6 @@ def test_every_edge_of_a_partial_revolution_is_blended():
         assert max(_normal_jump(solid, e, 21) for e in plate.Edges) < 1e-4, c["where"]
 
 
-def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept():
-    """shapes.tall_step's ten edges at R = 2.5: at the vertex (10.58, 0, 7.90), where
-    the riser's convex edge meets the step's concave one, the setback corner's 4-sided
-    hole (OCCT's patch there spans 8.1) got a plate spanning 189 to 240 from every
-    trial, within MAX_SEAM at its seams. It cut through a blend and the bottom face,
-    and the whole fillet failed: "not valid after sewing (... SelfIntersect ...)".
-    Such a plate is now refused (corners.MAX_AREA), and the two fillets at that vertex
-    are kept as OCCT's, with their reason. The other two corners, each of three
-    fillets on a box's corner, are filled with plates spanning about an eighth of the
-    ball's sphere, pi R^2 / 2."""
-    s, names = shapes.tall_step()
-    solid, rep = C2Blend.fillet_report(s, names, 2.5)
-    assert_valid(solid)
-    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
-    rising, concave = s.getElement("Edge8"), s.getElement("Edge10")
-    (at,) = [v.Point for v in rising.Vertexes if any(v.isSame(w) for w in concave.Vertexes)]
-    assert at.distanceToPoint(V(10.577757879704462, 0, 0.5 * 15.809080168923774)) < 1e-9
-    kept = rep["kept_occt_faces"]
-    assert {k["where"] for k in kept if k["where"].startswith("Shape.")} == \
-        {"Shape.Edge8", "Shape.Edge10"}
-    for k in kept:
-        if k["where"].startswith("Shape."):
-            m = re.search(r"OCCT's plate filling of its 4-sided hole spans ([0-9.e+]+) to "
-                          r"([0-9.e+]+) over (\d+) trials, more than a hemisphere on the "
-                          r"hole's rim \(([0-9.e+]+)\): it does not fill the hole", k["reason"])
-            assert m, k["reason"]
-            assert float(m.group(4)) < float(m.group(1)) <= float(m.group(2))
-            assert int(m.group(3)) == len(fl.cn.TRIALS)
-    assert len(rep["blends"]) == len(names) - 2
-    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
-    corners = rep["corner_patches"]
-    assert len(corners) == 2
-    for c in corners:
-        assert solid.getElement(c["face"]).Area == pytest.approx(math.pi * 2.5 ** 2 / 2,
-                                                                 rel=0.05)
-
-
 def test_a_filling_that_breaks_the_sewn_solid_is_remade(monkeypatch):
     """The partial revolution of the test above, with every fitted pole changed in its
     16th digit (x (1 +- 2.3e-16), a fixed pattern): OCCT's plate fillings at two
