@@ -1065,6 +1065,24 @@ def three_slots():
     return s
 
 
+def tall_step():
+    """A 10.58 x 16.44 x 15.81 block with a block half as wide and half as tall beside
+    it (x from 10.58 to 15.87), to full precision (--random-edges 40 --seed 31 --turned,
+    part 17, unturned), and the names of its ten edges that part fillets at R = 2.5: the
+    tall block's top edges along y at x = 0 and x = 10.58 and along x at y = 0, its
+    edges at x = 0 and y = 16.44 (vertical) and along y on the bottom, the step's
+    riser's edge at y = 0 (vertical, convex) and the step's two edges along y (concave
+    at x = 10.58, convex at x = 15.87), the low block's vertical edge at x = 15.87,
+    y = 0, and the bottom edge along x at y = 16.44. The riser's edge and the concave
+    one meet at (10.58, 0, 7.90), whose third edge (along x at y = 0) is not
+    selected."""
+    a, b, c = 10.577757879704462, 16.43748006088694, 15.809080168923774
+    s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.5 * a, b, 0.5 * c, V(a, 0, 0)))
+    s = s.removeSplitter()
+    return s, ["Edge2", "Edge3", "Edge4", "Edge6", "Edge7", "Edge8", "Edge10", "Edge12",
+               "Edge14", "Edge18"]
+
+
 def rounded_plate(r=0.3):
     """A 20 x 20 x 6 plate whose four vertical edges are rounded at r (OCCT), and the name
     of its top edge along y = 0: its top outline is one tangent chain of 4 lines and 4

@@ -15,6 +15,8 @@ are off by about 1e-6 and turn from the neighbouring faces' tangent planes by 1e
 1e-4 rad (up to 1.7e-3 on B-spline corners), which the report measures. It is never
 claimed G2, and it is not G1 in this report's strict sense (1e-8 rad).
 """
+import math
+
 import FreeCAD
 import Part
 
@@ -61,6 +63,16 @@ GOOD_G1 = 2e-5  # rad
 # and the solid, valid, lost 200 mm3); the worst kept corner seen is 1.7e-3 rad (the
 # gusset bracket at R = 0.5)
 MAX_SEAM = 1e-2
+# no filling of a corner's hole spans more than a hemisphere whose rim is as long as the
+# hole's edges, P^2 / (2 pi) (an octant of a sphere spans 0.07 P^2, a flat disc 0.08 P^2):
+# at a 4-sided hole of perimeter 17.6 (shapes.tall_step, R = 2.5), where OCCT's corner
+# patch spans 8.1, the 12 trials' plates spanned 189 to 240, the best turning from the
+# faces along its seams by 4.9e-3 rad (within MAX_SEAM); it cut through a blend and the
+# bottom face, and the sewn solid failed the BOP check;
+# at the spline block's corner near (0, 0, 15) (R = 1, a 52 degree wedge) they
+# spanned 6.6 to 9.3 against the rim's 4.6 and OCCT's patch's 2.2, rising 0.64 above
+# the top face while their seams met the blends within 1.4e-3 rad
+MAX_AREA = 1.0 / (2.0 * math.pi)  # times the perimeter squared
 SEAM_POINTS = 21  # per edge, where a filling's seams are measured
 BULGE_GRID = 16  # intervals per parameter where a filling's bulge is measured
 
@@ -95,8 +107,8 @@ def fill(shell, edges, trials=TRIALS, crease=None):
     (maximum degree, points per edge, iterations) of `trials` tried until a seam is
     within GOOD_G1, the best kept, those solved twice only where none solved once is fit
     to keep (TRIALS). A filling that rises beyond a plane it is tangent to by more than
-    twice its seams' gap ranks after every one that does not. Through the edges on
-    `crease` (an edge, or None) only, not
+    twice its seams' gap ranks after every one that does not; one that spans more than
+    MAX_AREA is never kept. Through the edges on `crease` (an edge, or None) only, not
     tangent there (a setback corner's edge on the face whose rim stays sharp,
     setback.py). Built in a hidden temporary document, which is closed again; the
     active document is left as it was. Raises Unfilled."""
@@ -116,10 +128,12 @@ def fill(shell, edges, trials=TRIALS, crease=None):
         tangent = [e for e, k in zip(edges, orders) if k]
         planes = _planes(shell, tangent, edges)
         size = Part.Compound(edges).BoundBox.DiagonalLength
-        best = None  # ((bulges, worst seam angle), face, trial)
+        most = MAX_AREA * sum(e.Length for e in edges) ** 2
+        # ((too large, bulges, worst seam angle), face, trial)
+        best, areas = None, []
         for trial in trials:
-            if trial[2] == TWICE and best is not None and not best[0][0] and \
-                    best[0][1] <= MAX_SEAM:
+            if trial[2] == TWICE and best is not None and not any(best[0][:2]) and \
+                    best[0][2] <= MAX_SEAM:
                 break  # a filling of the first kind is fit to keep
             filling = doc.addObject("Surface::Filling", "Fill")
             for key, value in FILL.items():
@@ -134,16 +148,22 @@ def fill(shell, edges, trials=TRIALS, crease=None):
                 continue
             face = result.Faces[0].copy()
             turn, gap = _seam(face, shell, tangent)
-            rank = (_bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
+            areas.append(face.Area)
+            rank = (face.Area > most, _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
             if best is None or rank < best[0]:
                 best = (rank, face, trial)
-            if not rank[0] and turn <= GOOD_G1:
+            if not any(rank[:2]) and turn <= GOOD_G1:
                 break
         if best is None:
             raise Unfilled("OCCT's plate filling of its %d-sided hole failed" % len(edges))
-        if best[0][1] > MAX_SEAM:
+        if best[0][0]:
+            raise Unfilled("OCCT's plate filling of its %d-sided hole spans %.3g to %.3g "
+                           "over %d trials, more than a hemisphere on the hole's rim "
+                           "(%.3g): it does not fill the hole"
+                           % (len(edges), min(areas), max(areas), len(areas), most))
+        if best[0][2] > MAX_SEAM:
             raise Unfilled("OCCT's plate filling of its %d-sided hole turns from the faces "
-                           "around it by %.2g rad at best" % (len(edges), best[0][1]))
+                           "around it by %.2g rad at best" % (len(edges), best[0][2]))
         return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
