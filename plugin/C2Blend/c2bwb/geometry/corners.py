@@ -70,8 +70,8 @@ MAX_SEAM = 1e-2
 # faces along its seams by 4.9e-3 rad (within MAX_SEAM); it cut through a blend and the
 # bottom face, and the sewn solid failed the BOP check;
 # at the spline block's corner near (0, 0, 15) (R = 1, a 52 degree wedge) they
-# spanned 6.6 to 9.3 against the rim's 4.6 and OCCT's patch's 2.2, rising 0.64 above
-# the top face while their seams met the blends within 1.4e-3 rad
+# spanned 6.6 to 9.3 against a hemisphere's 4.6 on its rim and OCCT's patch's 2.2, rising
+# 0.64 above the top face while their seams met the blends within 1.4e-3 rad
 MAX_AREA = 1.0 / (2.0 * math.pi)  # times the perimeter squared
 SEAM_POINTS = 21  # per edge, where a filling's seams are measured
 BULGE_GRID = 16  # intervals per parameter where a filling's bulge is measured
