@@ -149,7 +149,7 @@ def fill(shell, edges, trials=TRIALS, crease=None):
             face = result.Faces[0].copy()
             turn, gap = _seam(face, shell, tangent)
             areas.append(face.Area)
-            rank = (face.Area > most, _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
+            rank = (areas[-1] > most, _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
             if best is None or rank < best[0]:
                 best = (rank, face, trial)
             if not any(rank[:2]) and turn <= GOOD_G1:
