@@ -55,8 +55,26 @@ ONCE, TWICE = 1, 2  # a trial's Iterations: the plate solved once, or solved aga
 # setback corner (shapes.step at R = 1), every plate solved once bulged 0.028 R to 3.4 R
 # above the top face once the blends moved by 2e-13 (their turn: 3.9e-3 to 0.16 rad),
 # and every plate solved twice stayed below it, turning by 1.0e-3 to 5.3e-3 rad.
+# Where no plate of either kind is fit to keep, each size is solved once more through
+# pins: the points of OCCT's own corner patch (the patch the filling replaces) at the
+# interior nodes of a GUIDE_GRID x GUIDE_GRID grid of its parameters (those on the
+# face), each moved by the hole's edges' offsets from that patch, weighted by inverse
+# squared distance (Shepard's interpolation), so that the pins follow the hole where
+# its edges leave OCCT's patch (the blends' end sections are no arcs). At the spline
+# block's corner near (0, 0, 15) (R = 1), where every unpinned plate spanned 6.6 to 9.3
+# and OCCT's patch spans 2.2 on a rim 5.4 long, the hole's edges lie up to 0.057 off
+# OCCT's patch; through the 8 grid's moved pins every size gave a plate spanning 2.26,
+# turning from the blends by 1.5e-3 to 2.1e-3 rad; through pins not moved, 2.28 to 2.29
+# and 3.6e-3 to 8.0e-3 rad, two sizes failing; through a 6 grid's, 2.33 to 2.38 and
+# 5.3e-4 to 9.0e-3 rad, one failing; through a 4 grid's, 3.0 to 3.1. At a setback
+# corner OCCT's face spans only part of the hole: at shapes.tall_step's (R = 2.5) the
+# plates through its pins spanned 14.4 to 15.2 and turned by 0.028 to 0.13 rad, so no
+# plate is pinned there (fillet._Fill passes no guide).
+UNPINNED, PINNED = False, True
+GUIDE_GRID = 8
 _SIZES = ((12, 30), (10, 30), (13, 30), (12, 40), (10, 40), (13, 40))
-TRIALS = tuple(s + (ONCE,) for s in _SIZES) + tuple(s + (TWICE,) for s in _SIZES)
+TRIALS = tuple(s + (ONCE, UNPINNED) for s in _SIZES) + \
+    tuple(s + (TWICE, UNPINNED) for s in _SIZES) + tuple(s + (ONCE, PINNED) for s in _SIZES)
 GOOD_G1 = 2e-5  # rad
 # rad: a plate turning further from the faces around its hole does not fill it (at a
 # corner where blends end 1e-4 from a fillet kept as OCCT's, one folded over, 2 rad,
@@ -101,16 +119,17 @@ def holes(shell, patches, tol):
     return out
 
 
-def fill(shell, edges, trials=TRIALS, crease=None):
+def fill(shell, edges, guide, trials=TRIALS, crease=None):
     """(face, trial): the face filling the hole bounded by `edges` (free edges of
     `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with each
-    (maximum degree, points per edge, iterations) of `trials` tried until a seam is
-    within GOOD_G1, the best kept, those solved twice only where none solved once is fit
-    to keep (TRIALS). A filling that rises beyond a plane it is tangent to by more than
-    twice its seams' gap ranks after every one that does not; one that spans more than
-    MAX_AREA is never kept. Through the edges on `crease` (an edge, or None) only, not
-    tangent there (a setback corner's edge on the face whose rim stays sharp,
-    setback.py). Built in a hidden temporary document, which is closed again; the
+    (maximum degree, points per edge, iterations, pinned) of `trials` tried until a seam
+    is within GOOD_G1, the best kept, those solved twice only where none solved once is
+    fit to keep, and those pinned to the `guide` face (OCCT's corner patch, or None: no
+    pinned trial) only where none of the others is (TRIALS). A filling that rises
+    beyond a plane it is tangent to by more than twice its seams' gap ranks after every
+    one that does not; one that spans more than MAX_AREA is never kept. Through the
+    edges on `crease` (an edge, or None) only, not tangent there (a setback corner's
+    edge on the face whose rim stays sharp, setback.py). Built in a hidden temporary document, which is closed again; the
     active document is left as it was. Raises Unfilled."""
     edges = _in_order(edges)
     orders = [0 if crease is not None and on_edge(e, crease) else 1 for e in edges]
@@ -126,19 +145,29 @@ def fill(shell, edges, trials=TRIALS, crease=None):
             names.append((holder, "Edge%d" % (k + 1)))
             faces.append("Face%d" % (j + 1))
         tangent = [e for e, k in zip(edges, orders) if k]
+        pinned = None  # the pins' vertices, made for the first pinned trial
         planes = _planes(shell, tangent, edges)
         size = Part.Compound(edges).BoundBox.DiagonalLength
         most = MAX_AREA * sum(e.Length for e in edges) ** 2
         # ((too large, bulges, worst seam angle), face, trial)
         best, areas = None, []
         for trial in trials:
-            if trial[2] == TWICE and best is not None and not any(best[0][:2]) and \
-                    best[0][2] <= MAX_SEAM:
-                break  # a filling of the first kind is fit to keep
+            if trial[3] and guide is None:
+                continue
+            if best is not None and _kind(trial) > _kind(best[2]) and \
+                    not any(best[0][:2]) and best[0][2] <= MAX_SEAM:
+                break  # a filling of an earlier kind is fit to keep
             filling = doc.addObject("Surface::Filling", "Fill")
             for key, value in FILL.items():
                 setattr(filling, key, value)
-            filling.MaximumDegree, filling.PointsOnCurve, filling.Iterations = trial
+            filling.MaximumDegree, filling.PointsOnCurve, filling.Iterations = trial[:3]
+            if trial[3]:
+                if pinned is None:
+                    pins = doc.addObject("Part::Feature", "Pins")
+                    pins.Shape = Part.Compound([Part.Vertex(p) for p in _pins(guide, edges)])
+                    pinned = [(pins, "Vertex%d" % (i + 1))
+                              for i in range(len(pins.Shape.Vertexes))]
+                filling.Points = pinned
             filling.BoundaryEdges = names
             filling.BoundaryFaces = faces
             filling.BoundaryOrder = orders  # 1: tangent to the edge's face
@@ -167,6 +196,31 @@ def fill(shell, edges, trials=TRIALS, crease=None):
         return best[1:]
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+def _kind(trial):
+    """0, 1 or 2: a trial solved once, solved twice, or pinned (TRIALS' order)."""
+    return 2 if trial[3] else (1 if trial[2] == TWICE else 0)
+
+
+def _pins(face, edges):
+    """The points of `face` at the interior nodes of a GUIDE_GRID x GUIDE_GRID grid of
+    its parameters that lie on it, each moved by the offsets of the hole's `edges` from
+    the face (at SEAM_POINTS per edge, from the nearest point of the face), weighted by
+    the inverse square of the distance to that nearest point."""
+    rim = [e.valueAt(t) for e in edges for t in ck.sample_params(e, SEAM_POINTS)]
+    near = [face.distToShape(Part.Vertex(q))[1][0][0] for q in rim]
+    u0, u1, v0, v1 = face.ParameterRange
+    grid = [(u0 + (u1 - u0) * i / GUIDE_GRID, v0 + (v1 - v0) * j / GUIDE_GRID)
+            for i in range(1, GUIDE_GRID) for j in range(1, GUIDE_GRID)]
+    out = []
+    for p in (face.Surface.value(u, v) for u, v in grid if face.isPartOfDomain(u, v)):
+        weights = [1.0 / max((p - r).Length, 1e-12) ** 2 for r in near]
+        move = FreeCAD.Vector()
+        for w, q, r in zip(weights, rim, near):
+            move += (q - r) * w
+        out.append(p + move * (1.0 / sum(weights)))
+    return out
 
 
 def on_edge(e, other):

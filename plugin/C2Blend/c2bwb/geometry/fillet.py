@@ -1670,7 +1670,9 @@ class _Fill:
         if not left:
             return False
         try:
-            self.face, trial = cn.fill(self.shell, self.loop, left, self.patch.crease)
+            # OCCT's face at a setback corner spans only part of the hole: no guide there
+            guide = None if self.patch.setback else self.patch.face
+            self.face, trial = cn.fill(self.shell, self.loop, guide, left, self.patch.crease)
         except cn.Unfilled as ex:
             self.error = str(ex)
             return False
