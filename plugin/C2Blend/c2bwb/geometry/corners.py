@@ -129,8 +129,9 @@ def fill(shell, edges, guide, trials=TRIALS, crease=None):
     beyond a plane it is tangent to by more than twice its seams' gap ranks after every
     one that does not; one that spans more than MAX_AREA is never kept. Through the
     edges on `crease` (an edge, or None) only, not tangent there (a setback corner's
-    edge on the face whose rim stays sharp, setback.py). Built in a hidden temporary document, which is closed again; the
-    active document is left as it was. Raises Unfilled."""
+    edge on the face whose rim stays sharp, setback.py). Built in a hidden temporary
+    document, which is closed again; the active document is left as it was. Raises
+    Unfilled."""
     edges = _in_order(edges)
     orders = [0 if crease is not None and on_edge(e, crease) else 1 for e in edges]
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
