@@ -4753,6 +4753,33 @@ def test_every_edge_of_a_partial_revolution_is_blended():
         assert max(_normal_jump(solid, e, 21) for e in plate.Edges) < 1e-4, c["where"]
 
 
+def test_no_corner_filling_of_a_partial_revolution_balloons_past_occts_patch():
+    """All 12 edges of the partial revolution at R = 2. Through pinned plates, two
+    mirrored corners were filled by plates spanning 3.5 and 8.9 where OCCT's corner
+    patches span 3.45, and a third by one spanning 9.3 where OCCT's spans 2.98: each
+    within a hemisphere on its rim (corners.MAX_AREA) and within 1e-2 rad of the faces
+    around it at the filling's 21 points, but ballooning. A plate spanning more than
+    corners.GUIDE_AREA times OCCT's patch is no longer kept. Checked independently of
+    the report: each filling spans what OCCT's own corner face nearest to it (from
+    OCCT's fillet of the same edges) spans, within 10%, and lies within 0.2 of it; each
+    fillet not blended says why."""
+    s, _ = shapes.partial_revolution()
+    edges = shapes.every_edge(s)
+    solid, rep = C2Blend.fillet_report(s, edges, 2.0, label="Rev")
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert len(rep["blends"]) >= 7 and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert all(k["reason"] for k in rep["kept_occt_faces"])
+    occt = s.makeFillet(2.0, [s.getElement(e) for e in edges])
+    new = [f for f in occt.Faces if not any(f.isSame(g) for g in s.Faces)]
+    assert rep["corner_patches"]
+    for c in rep["corner_patches"]:
+        face = solid.getElement(c["face"])
+        near = min(new, key=lambda f: (f.CenterOfMass - face.CenterOfMass).Length)
+        assert (near.CenterOfMass - face.CenterOfMass).Length < 0.2, c
+        assert face.Area == pytest.approx(near.Area, rel=0.1), c
+
+
 def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept():
     """shapes.tall_step's ten edges at R = 2.5: at the vertex (10.58, 0, 7.90), where
     the riser's convex edge meets the step's concave one, the setback corner's 4-sided

@@ -91,6 +91,13 @@ MAX_SEAM = 1e-2
 # spanned 6.6 to 9.3 against a hemisphere's 4.6 on its rim and OCCT's patch's 2.2, rising
 # 0.64 above the top face while their seams met the blends within 1.4e-3 rad
 MAX_AREA = 1.0 / (2.0 * math.pi)  # times the perimeter squared
+# no filling of a corner's hole where OCCT's corner patch lies along the hole (no
+# setback) spans more than GUIDE_AREA times that patch: at the partial revolution's
+# corners at R = 2 (shapes.partial_revolution), plates at two mirrored corners spanned
+# 3.5 and 8.9 where OCCT's patches span 3.45, and at a third 9.3 where OCCT's spans
+# 2.98, all within a hemisphere on their rims; the plates kept there since span 1.02
+# to 1.04 times OCCT's patch
+GUIDE_AREA = 1.5
 SEAM_POINTS = 21  # per edge, where a filling's seams are measured
 BULGE_GRID = 16  # intervals per parameter where a filling's bulge is measured
 
@@ -127,11 +134,11 @@ def fill(shell, edges, guide, trials=TRIALS, crease=None):
     fit to keep, and those pinned to the `guide` face (OCCT's corner patch, or None: no
     pinned trial) only where none of the others is (TRIALS). A filling that rises
     beyond a plane it is tangent to by more than twice its seams' gap ranks after every
-    one that does not; one that spans more than MAX_AREA is never kept. Through the
-    edges on `crease` (an edge, or None) only, not tangent there (a setback corner's
-    edge on the face whose rim stays sharp, setback.py). Built in a hidden temporary
-    document, which is closed again; the active document is left as it was. Raises
-    Unfilled."""
+    one that does not; one that spans more than MAX_AREA, or GUIDE_AREA times the
+    guide, is never kept. Through the edges on `crease` (an edge, or None) only, not
+    tangent there (a setback corner's edge on the face whose rim stays sharp,
+    setback.py). Built in a hidden temporary document, which is closed again; the
+    active document is left as it was. Raises Unfilled."""
     edges = _in_order(edges)
     orders = [0 if crease is not None and on_edge(e, crease) else 1 for e in edges]
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
@@ -149,7 +156,9 @@ def fill(shell, edges, guide, trials=TRIALS, crease=None):
         pinned = None  # the pins' vertices, made for the first pinned trial
         planes = _planes(shell, tangent, edges)
         size = Part.Compound(edges).BoundBox.DiagonalLength
-        most = MAX_AREA * sum(e.Length for e in edges) ** 2
+        most = (MAX_AREA * sum(e.Length for e in edges) ** 2, "a hemisphere on the hole's rim")
+        if guide is not None and GUIDE_AREA * guide.Area < most[0]:
+            most = (GUIDE_AREA * guide.Area, "%g times OCCT's corner patch" % GUIDE_AREA)
         # ((too large, bulges, worst seam angle), face, trial)
         best, areas = None, []
         for trial in trials:
@@ -179,7 +188,7 @@ def fill(shell, edges, guide, trials=TRIALS, crease=None):
             face = result.Faces[0].copy()
             turn, gap = _seam(face, shell, tangent)
             areas.append(face.Area)
-            rank = (areas[-1] > most, _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
+            rank = (areas[-1] > most[0], _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
             if best is None or rank < best[0]:
                 best = (rank, face, trial)
             if not any(rank[:2]) and turn <= GOOD_G1:
@@ -188,9 +197,9 @@ def fill(shell, edges, guide, trials=TRIALS, crease=None):
             raise Unfilled("OCCT's plate filling of its %d-sided hole failed" % len(edges))
         if best[0][0]:
             raise Unfilled("OCCT's plate filling of its %d-sided hole spans %.3g to %.3g "
-                           "over %d trials, more than a hemisphere on the hole's rim "
-                           "(%.3g): it does not fill the hole"
-                           % (len(edges), min(areas), max(areas), len(areas), most))
+                           "over %d trials, more than %s (%.3g): it does not fill the hole"
+                           % (len(edges), min(areas), max(areas), len(areas), most[1],
+                              most[0]))
         if best[0][2] > MAX_SEAM:
             raise Unfilled("OCCT's plate filling of its %d-sided hole turns from the faces "
                            "around it by %.2g rad at best" % (len(edges), best[0][2]))
