@@ -614,6 +614,37 @@ def slot_over_side_hole():
     return s, [wall, floor]
 
 
+def slot_over_small_side_hole():
+    """A 20.35 x 22.44 x 9.585 block with a side hole r = 1.659 along x (axis y = 3.896,
+    z = 4.792) and a slot 2.007 wide from above down to z = 3.303, its round ends
+    (r = 1.003) about x = 11.25 and 13.74, y = 5.762: the hole's top cuts the slot's
+    floor along its wall y = 4.758 (--random-machined 40 --seed 32, part 15, to full
+    precision). Returns (solid, names of the survey's five edges: two of the block's
+    edges along x, the two arcs of the slot's top rim at x = 13.74 and the floor's edge
+    along the wall y = 6.765)."""
+    a, b, c = 20.34531230117065, 22.438509267776546, 9.584813914057033
+    s = Part.makeBox(a, b, c)
+    s = s.cut(Part.makeCylinder(1.6594453930759276, a + 2, V(-1, 3.896151899087102, 0.5 * c),
+                                V(1, 0, 0))).removeSplitter()
+    r, x, y = 2.0066402816239566, 12.494046446775219, 5.76173793857972
+    w, length, depth = 0.5 * r, 1.2403038884568724 * r, 0.6554171206845746 * c
+    tool = Part.makeBox(length, 2 * w, depth + 1, V(x - 0.5 * length, y - w, c - depth))
+    for end in (-0.5, 0.5):
+        tool = tool.fuse(Part.makeCylinder(w, depth + 1, V(x + end * length, y, c - depth)))
+    s = s.cut(tool).removeSplitter()
+
+    def along_x(e, y_, z_):
+        return e.BoundBox.XLength > 0.5 * a and all(
+            abs(v.Point.y - y_) < 1e-9 and abs(v.Point.z - z_) < 1e-9 for v in e.Vertexes)
+    rim = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Circle)
+           and e.BoundBox.ZMin > c - 1e-9 and e.BoundBox.XMin > x + 0.5 * length - 1e-9]
+    floor = _edge_named(s, lambda e: isinstance(e.Curve, Part.Line)
+                        and abs(e.BoundBox.ZMax - (c - depth)) < 1e-9 and e.BoundBox.ZLength < 1e-9
+                        and abs(e.BoundBox.YMin - (y + w)) < 1e-9)
+    return s, [_edge_named(s, lambda e: along_x(e, 0.0, 0.0)),
+               _edge_named(s, lambda e: along_x(e, b, c))] + rim + [floor]
+
+
 def boss_on_boss(lower=(5.0, 15.0, 20.0, 2.0), taller=(5.0, 21.0, 20.0, 4.0)):
     """A 40 x 40 x 3 plate with two overlapping cylindrical bosses on it, each (radius,
     x, y, height): the lower boss's top is a crescent, bounded by its rim (convex) and

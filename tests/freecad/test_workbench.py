@@ -4780,6 +4780,49 @@ def test_no_corner_filling_of_a_partial_revolution_balloons_past_occts_patch():
         assert face.Area == pytest.approx(near.Area, rel=0.1), c
 
 
+def test_a_corner_patch_meeting_a_face_at_an_angle_is_filled_through_that_edge():
+    """shapes.slot_over_small_side_hole, the survey's five edges at R = 0.079: OCCT's
+    corner patches where the slot's floor fillet ends on the side hole's wall meet
+    that wall at about 2.1 rad, not tangentially. Every plate made tangent to the wall
+    there turned from the faces by 3.1 rad at best, and every fillet at those corners
+    was kept as OCCT's (2 blends, no corner filled). The filling now only passes
+    through the edges where OCCT's patch meets a face at an angle
+    (rollingball.CornerPatch.creases). Checked with OCCT's normals on both sides: each
+    filling meets the wall within 0.1 rad of the angle at which OCCT's own patch
+    there (from OCCT's fillet of the same edges) meets it, the blends within
+    corners.MAX_SEAM, and spans OCCT's patch's area within 10%."""
+    s, names = shapes.slot_over_small_side_hole()
+    solid, rep = C2Blend.fillet_report(s, names, 0.079)
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert all(t["verdict"] == "G2" for t in rep["trimlines"])
+    blended = {b["where"] for b in rep["blends"]}
+    assert {"Shape.%s" % e for e in (names[0], names[1], names[4])} <= blended, blended
+    assert all(k["reason"] for k in rep["kept_occt_faces"])
+    occt = s.makeFillet(0.079, [s.getElement(e) for e in names])
+    new = [f for f in occt.Faces if not any(f.isSame(g) for g in s.Faces)]
+    corners = rep["corner_patches"]
+    assert len(corners) == 2
+    lines = ck.format_report(rep)
+    for c in corners:
+        assert c["crease"]["edges"] == 1 and not c["crease"]["setback"]
+        assert c["edges"] == 3 and c["g1"] < fl.cn.MAX_SEAM, c
+        assert any("it meets %s at an angle, as OCCT's corner patch does" % c["crease"]["face"]
+                   in x for x in lines), lines
+        face, wall = solid.getElement(c["face"]), solid.getElement(c["crease"]["face"])
+        near = min(new, key=lambda f: (f.CenterOfMass - face.CenterOfMass).Length)
+        assert (near.CenterOfMass - face.CenterOfMass).Length < 0.01
+        assert face.Area == pytest.approx(near.Area, rel=0.1)
+        (crease,) = [e for e in face.Edges if any(e.isSame(x) for x in wall.Edges)]
+        (theirs,) = [e for e in near.Edges if any(isinstance(f.Surface, Part.Cylinder)
+                                                  for f in occt.ancestorsOfType(e, Part.Face))]
+        ours, occts = _normal_jump(solid, crease, 21), _normal_jump(occt, theirs, 21)
+        assert 1.0 < occts < 2.5 and abs(ours - occts) < 0.1
+        for e in face.Edges:
+            if not e.isSame(crease):
+                assert _normal_jump(solid, e, 21) < fl.cn.MAX_SEAM
+
+
 def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept():
     """shapes.tall_step's ten edges at R = 2.5: at the vertex (10.58, 0, 7.90), where
     the riser's convex edge meets the step's concave one, the setback corner's 4-sided

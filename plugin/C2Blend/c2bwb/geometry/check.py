@@ -304,10 +304,13 @@ def format_report(rep):
                      "the blends' ends within tolerance (never G2; in the verdict): %s, edges "
                      "%.2e apart, normals %.2e rad apart"
                      % (r["where"], r["face"], r["verdict"], r["g0"], r["g1"]))
-        if "crease" in r:  # setback.py
+        if "crease" in r and r["crease"]["setback"]:  # setback.py
             lines[-1] += ("; set back from a vertex whose third edge stays sharp, it meets "
                           "%s at an angle there, as the top face meets it along that edge "
                           "(not in those measures)" % r["crease"]["face"])
+        elif "crease" in r:
+            lines[-1] += ("; it meets %s at an angle, as OCCT's corner patch does (not in "
+                          "those measures)" % r["crease"]["face"])
     for k in rep.get("skipped_edges", []):
         lines.append("%s: left out of the fillet: %s" % (k["where"], k["reason"]))
     for k in rep.get("kept_occt_faces", []):

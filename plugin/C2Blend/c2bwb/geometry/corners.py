@@ -126,7 +126,7 @@ def holes(shell, patches, tol):
     return out
 
 
-def fill(shell, edges, guide, trials=TRIALS, crease=None):
+def fill(shell, edges, guide, trials=TRIALS, creases=()):
     """(face, trial): the face filling the hole bounded by `edges` (free edges of
     `shell`), tangent to each edge's face in the shell (OCCT's plate, FILL), with each
     (maximum degree, points per edge, iterations, pinned) of `trials` tried until a seam
@@ -135,12 +135,13 @@ def fill(shell, edges, guide, trials=TRIALS, crease=None):
     pinned trial) only where none of the others is (TRIALS). A filling that rises
     beyond a plane it is tangent to by more than twice its seams' gap ranks after every
     one that does not; one that spans more than MAX_AREA, or GUIDE_AREA times the
-    guide, is never kept. Through the edges on `crease` (an edge, or None) only, not
-    tangent there (a setback corner's edge on the face whose rim stays sharp,
-    setback.py). Built in a hidden temporary document, which is closed again; the
-    active document is left as it was. Raises Unfilled."""
+    guide, is never kept. Through the edges on `creases` (edges) only, not tangent
+    there (rollingball.CornerPatch.creases: a setback corner's edge on the face whose
+    rim stays sharp, setback.py, or where OCCT's patch meets a face at an angle).
+    Built in a hidden temporary document, which is closed again; the active document
+    is left as it was. Raises Unfilled."""
     edges = _in_order(edges)
-    orders = [0 if crease is not None and on_edge(e, crease) else 1 for e in edges]
+    orders = [0 if any(on_edge(e, c) for c in creases) else 1 for e in edges]
     doc = FreeCAD.newDocument("C2BlendCorner", hidden=True, temp=True)
     try:
         holder = doc.addObject("Part::Feature", "Shell")

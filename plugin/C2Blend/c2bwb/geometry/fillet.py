@@ -1672,7 +1672,7 @@ class _Fill:
         try:
             # OCCT's face at a setback corner spans only part of the hole: no guide there
             guide = None if self.patch.setback else self.patch.face
-            self.face, trial = cn.fill(self.shell, self.loop, guide, left, self.patch.crease)
+            self.face, trial = cn.fill(self.shell, self.loop, guide, left, self.patch.creases)
         except cn.Unfilled as ex:
             self.error = str(ex)
             return False
@@ -1816,17 +1816,17 @@ def _corner_check(solid, patch, scales):
     verdict by the report's criteria (scales: check.compare's)."""
     face = _patch_face(solid, patch)
     edges = [e for e in face.Edges if not e.Degenerated]
-    creased = [e for e in edges if patch.crease is not None and cn.on_edge(e, patch.crease)]
+    creased = [e for e in edges if any(cn.on_edge(e, c) for c in patch.creases)]
     rs = [ck.check_edge(solid, e, scales=scales) for e in edges
           if not any(e is c for c in creased)]
     out = {"where": patch.where(), "face": ck.element_name(solid, face, "Face"),
            "edges": len(rs), "g0": max(r["g0"] for r in rs),
            "g1": max(r["g1"] for r in rs), "g2_rel": max(r["g2_rel"] for r in rs),
            "verdict": min((r["verdict"] for r in rs), key=ck.RANK.get)}
-    if creased:  # where it meets the face whose rim stays sharp, at an angle
+    if creased:  # where it meets a face at an angle, as OCCT's patch or the rim does
         wall = [f for f in solid.ancestorsOfType(creased[0], Part.Face) if not f.isSame(face)]
         out["crease"] = {"edges": len(creased), "face": ck.element_name(solid, wall[0], "Face")
-                         if wall else None}
+                         if wall else None, "setback": patch.setback is not None}
     return out
 
 

@@ -365,19 +365,20 @@ class CornerPatch:
     patch set): face; chains: the FilletChains ending at it; setback: None or the
     setback.Setback; tools: the edges bounding the faces around it anew (face's own,
     or the setback's); region: where the hole its filling fills lies (face, with the
-    setback's edges); crease: the setback's edge on the face whose rim stays sharp,
-    which the filling only passes through, or None. It is replaced by a filling
-    (corners.py) when any of those chains is blended."""
+    setback's edges); creases: the edges its filling only passes through, not tangent
+    to the faces there: the setback's edge on the face whose rim stays sharp, or the
+    face's own edges where it meets a face at an angle (its RollingBallFace's ends). It
+    is replaced by a filling (corners.py) when any of those chains is blended."""
 
     def __init__(self, rbf, chains_):
         self.face = rbf.face
         self.chains = [c for c in chains_ if any(p is rbf for _, p in c.corners)]
         self.setback = rbf.setback
         # the edges bounding the faces around it anew, the shape its hole lies at, and
-        # the setback's edge its filling only passes through
+        # the edges its filling only passes through
         self.tools = self.setback.tools if self.setback else self.face.Edges
         self.region = Part.Compound([self.face] + self.tools) if self.setback else self.face
-        self.crease = self.setback.crease if self.setback else None
+        self.creases = [self.setback.crease] if self.setback else [e for e, _ in rbf.ends]
 
     def where(self):
         """'corner patch at (x, y, z)', for messages."""
