@@ -135,7 +135,7 @@ def fill(shell, edges, guide, trials=TRIALS, creases=()):
     pinned trial) only where none of the others is (TRIALS). A filling that rises
     beyond a plane it is tangent to by more than twice its seams' gap ranks after every
     one that does not; one that spans more than MAX_AREA, or GUIDE_AREA times the
-    guide, is never kept. Through the edges on `creases` (edges) only, not tangent
+    guide, is never kept, and its seams are not measured. Through the edges on `creases` (edges) only, not tangent
     there (rollingball.CornerPatch.creases: a setback corner's edge on the face whose
     rim stays sharp, setback.py, or where OCCT's patch meets a face at an angle).
     Built in a hidden temporary document, which is closed again; the active document
@@ -187,12 +187,15 @@ def fill(shell, edges, guide, trials=TRIALS, creases=()):
             if result.isNull() or len(result.Faces) != 1 or not result.isValid():
                 continue
             face = result.Faces[0].copy()
-            turn, gap = _seam(face, shell, tangent)
             areas.append(face.Area)
-            rank = (areas[-1] > most[0], _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
+            if areas[-1] > most[0]:  # never kept, so not measured (slow on such a plate)
+                rank = (True, True, math.inf)
+            else:
+                turn, gap = _seam(face, shell, tangent)
+                rank = (False, _bulge(face, planes) > 2.0 * gap + 1e-7 * size, turn)
             if best is None or rank < best[0]:
                 best = (rank, face, trial)
-            if not any(rank[:2]) and turn <= GOOD_G1:
+            if not any(rank[:2]) and rank[2] <= GOOD_G1:
                 break
         if best is None:
             raise Unfilled("OCCT's plate filling of its %d-sided hole failed" % len(edges))
