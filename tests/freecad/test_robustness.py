@@ -37,6 +37,9 @@ def doc(request):
     d.addObject("Part::Feature", "Glued").Shape = Part.makeBox(10, 10, 10).generalFuse(
         [Part.makeBox(10, 10, 10, FreeCAD.Vector(10, 0, 0))])[0]  # sharing a face
     d.addObject("Part::Feature", "Misoriented").Shape = shapes.misoriented_box()
+    # a solid whose shell is open (as a failed Boolean can leave): the box without its top
+    d.addObject("Part::Feature", "OpenSolid").Shape = Part.Solid(
+        Part.Shell(Part.makeBox(10, 10, 10).Faces[:5]))
     d.recompute()
     yield d
     FreeCAD.closeDocument(d.Name)
@@ -90,6 +93,17 @@ BAD_FILLETS = [
      r"\(the result is not a valid solid\) on a solid that is not valid itself \(isValid\(\) "
      r"is False\): repair it first; .* shape\.fix\(1e-7, 1e-7, 1e-7\) mends faults such as "
      r"a face oriented against the rest of its shell$"),
+    ("OpenSolid", [lambda s: next(  # an edge of the open top: one face
+        "Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+        if len(s.ancestorsOfType(e, Part.Face)) == 1)],
+     2.0, {}, r"OpenSolid\.Edge\d+: the edge has 1 adjacent face; a fillet needs exactly 2 "
+     r"\(it is a free edge of the solid's shell, which is open there, so the solid is not "
+     r"closed and not valid: repair or rebuild it first"),
+    ("OpenSolid", [lambda s: next(  # a vertical edge, between two faces
+        "Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if e.BoundBox.ZLength > 5)],
+     2.0, {}, r"^OpenSolid: the solid is not closed: its shell is open along Edge\d+, "
+     r"Edge\d+, Edge\d+ and Edge\d+ \(edges with one face\), so it is not valid: repair "
+     r"or rebuild it first"),
     ("Rounded", [lambda s: next(  # where OCCT's fillet meets a face, tangentially
         "Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if isinstance(e.Curve, Part.Line)
         and any(isinstance(f.Surface, Part.Cylinder) for f in s.ancestorsOfType(e, Part.Face)))],
@@ -345,7 +359,7 @@ def test_failed_recompute_keeps_shape_and_undo_redo(doc):
         doc.undo()
     assert [o.Name for o in doc.Objects] == ["Box", "ShaftPlate", "Sheet", "Pair", "OpenBox",
                                              "Rounded", "Inverted", "ClosedShell",
-                                             "Glued", "Misoriented"]
+                                             "Glued", "Misoriented", "OpenSolid"]
     doc.redo()
     doc.recompute()
     assert doc.getObject(name).Shape.isValid()

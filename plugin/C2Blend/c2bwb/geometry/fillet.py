@@ -131,11 +131,9 @@ def resolve_edges(shape, edges, label, skipped=None):
                 % ck.element_name(shape, faces[0], "Face"))})
             continue
         if len(faces) != 2:
-            raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2 "
-                               "(the shape is a %s with %d solid(s); a fillet needs one "
-                               "closed solid)"
-                               % (len(faces), "" if len(faces) == 1 else "s", shape.ShapeType,
-                                  len(shape.Solids)), where)
+            raise C2BlendError("the edge has %d adjacent face%s; a fillet needs exactly 2 %s"
+                               % (len(faces), "" if len(faces) == 1 else "s",
+                                  _why_not_two(shape, faces)), where)
         a = _normals_angle(faces, edge)
         if a < TANGENT_ANGLE:
             smooth.append({"where": where, "reason": (
@@ -148,6 +146,19 @@ def resolve_edges(shape, edges, label, skipped=None):
     if skipped is not None:
         skipped += smooth
     return out
+
+
+def _why_not_two(shape, faces):
+    """Why an edge of `shape` lies on these `faces`, not two, for resolve_edges'
+    message: the one solid of `shape` is not closed there (a free edge of its shell,
+    as a failed Boolean can leave), or `shape` is not one solid."""
+    solids = shape.Solids
+    if len(faces) == 1 and len(solids) == 1 and any(faces[0].isSame(f) for f in solids[0].Faces):
+        return ("(it is a free edge of the solid's shell, which is open there, so the solid "
+                "is not closed and not valid: repair or rebuild it first; Part > Check "
+                "geometry shows what is wrong)")
+    return ("(the shape is a %s with %d solid(s); a fillet needs one closed solid)"
+            % (shape.ShapeType, len(solids)))
 
 
 def _normals_angle(faces, edge):
@@ -204,9 +215,34 @@ def check_solid(shape, label):
                            "them; a fillet needs one closed solid%s"
                            % ("null shape" if shape.isNull() else shape.ShapeType,
                               len(solids), loose, advice), label)
+    if not all(sh.isClosed() for sh in solids[0].Shells):
+        free = [ck.element_name(shape, e, "Edge") for e in _free_edges(solids[0])]
+        raise C2BlendError("the solid is not closed: its shell is open along %s (edge%s with "
+                           "one face), so it is not valid: repair or rebuild it first; Part > "
+                           "Check geometry shows what is wrong"
+                           % (_listed(free, 5), "" if len(free) == 1 else "s"), label)
     if solids[0].Volume < 0:
         raise C2BlendError("the solid is inside out: its faces point inwards (volume %.6g); "
                            "reverse it first (shape.reversed())" % solids[0].Volume, label)
+
+
+def _free_edges(solid):
+    """The edges of `solid` that bound one face only (not seams or degenerated edges):
+    where its shell is open."""
+    out = []
+    for e in solid.Edges:
+        faces = solid.ancestorsOfType(e, Part.Face)
+        if not e.Degenerated and len(faces) == 1 and not e.isSeam(faces[0]):
+            out.append(e)
+    return out
+
+
+def _listed(names, most=None):
+    """'A, B and C' for a list of names; with `most`, the first `most` of a longer one
+    then 'and N more'."""
+    if most is not None and len(names) > most:
+        return "%s and %d more" % (", ".join(names[:most]), len(names) - most)
+    return " and ".join([", ".join(names[:-1]), names[-1]]) if len(names) > 1 else names[0]
 
 
 def positive_number(x, what, label, field=None):
@@ -2142,8 +2178,8 @@ def _failing_set(shape, names, radius, label):
             if any(v.isSame(w) for _, g in rest[i + 1:] for w in g.Vertexes) and \
                     not any(v.isSame(m) for m in meet):
                 meet.append(v)
-    return (". It fails on %s and %s together%s, though it succeeds at radius %g on %s%s"
-            % (", ".join(listed[:-1]), listed[-1], ", where they meet at %s" % " and ".join(
+    return (". It fails on %s together%s, though it succeeds at radius %g on %s%s"
+            % (_listed(listed), ", where they meet at %s" % " and ".join(
                 "(%.4g, %.4g, %.4g)" % tuple(v.Point) for v in meet) if meet else "", radius,
                "any %d of them" % (len(rest) - 1) if len(rest) > 2 else "either alone",
                _with_others(shape, [e for _, e in names], meet, radius,
