@@ -10,6 +10,7 @@ report next to the check of OCCT's own rolling-ball fillet of the same edge.
 import json
 import os
 import sys
+import time
 
 if "/usr/lib/freecad-python3/lib" not in sys.path:
     sys.path.append("/usr/lib/freecad-python3/lib")
@@ -45,7 +46,9 @@ for b in report["blends"]:
 print("  continuity across the trimlines (%d samples each): %s"
       % (report["trimlines"][0]["samples"], report["verdict"]))
 print("    " + C2Blend.format_report(report).replace("\n", "\n    "))
+t0 = time.perf_counter()
 rolling = part.makeFillet(2.0, junction)
+t_occt = time.perf_counter() - t0
 occt_edges = [e for e in rolling.Edges
               if len(rolling.ancestorsOfType(e, Part.Face)) == 2
               and any(f.Surface.__class__.__name__ == "Toroid"
@@ -54,5 +57,6 @@ occt_edges = [e for e in rolling.Edges
 occt = C2Blend.check(rolling, occt_edges)
 print("  OCCT's rolling-ball fillet of the same edge: %s" % occt["verdict"])
 print("    " + C2Blend.format_report(occt).replace("\n", "\n    "))
-print("  time: %.0f ms (OCCT's fillet alone %.1f ms); wrote %s/demo.step and %s/demo_report.json"
-      % (1e3 * report["seconds"], 1e3 * report["occt_seconds"], out, out))
+# the first fillet of a session also starts the check server (bopcheck.py)
+print("  time: %.0f ms (OCCT's makeFillet alone %.1f ms); wrote %s/demo.step and "
+      "%s/demo_report.json" % (1e3 * report["seconds"], 1e3 * t_occt, out, out))
