@@ -645,6 +645,29 @@ def slot_over_small_side_hole():
                _edge_named(s, lambda e: along_x(e, b, c))] + rim + [floor]
 
 
+def hole_through_pocket_floor():
+    """A 25.01 x 28.26 x 8.343 plate, two of its vertical edges rounded (r = 5.091), with
+    a pocket 5.875 x 8.785 and 3.402 deep, its corners rounded (r = 1.964), and a hole
+    r = 1.954 through the pocket's floor, both centred at (12.50, 12.50): the hole's
+    rim on the floor passes 0.98 and 0.38 from the pocket's walls (--random-plates 40
+    --seed 44, part 29, to full precision). Returns (solid, name of that rim)."""
+    a, b, c = 25.007401728513678, 28.257246894802996, 8.342694275357296
+    s = Part.Face(Part.makePolygon([V(0, 0, 0), V(a, 0, 0), V(a, b, 0), V(0, b, 0),
+                                    V(0, 0, 0)])).extrude(V(0, 0, c))
+    vertical = [e for e in s.Edges if e.BoundBox.ZLength > 1e-9]
+    s = s.makeFillet(0.2035777383090373 * a, vertical[1:3])
+    s = s.cut(Part.makeCylinder(1.9542422686483332, c + 2, V(0.5 * a, 0.5 * a, -1)))
+    pw, ph, depth = 0.23491425227427115 * a, 0.35130438450183815 * a, 0.4077883511331306 * c
+    tool = Part.makeBox(pw, ph, depth + 1, V(0.5 * a - pw / 2, 0.5 * a - ph / 2, c - depth))
+    tool = tool.makeFillet(0.3343024155602733 * min(pw, ph),
+                           [e for e in tool.Edges if e.BoundBox.ZLength > 1e-9])
+    s = s.cut(tool).removeSplitter().Solids[0]
+    rim = _edge_named(s, lambda e: isinstance(e.Curve, Part.Circle) and e.Closed
+                      and abs(e.Curve.Radius - 1.9542422686483332) < 1e-9
+                      and abs(e.BoundBox.ZMin - (c - depth)) < 1e-9)
+    return s, rim
+
+
 def boss_on_boss(lower=(5.0, 15.0, 20.0, 2.0), taller=(5.0, 21.0, 20.0, 4.0)):
     """A 40 x 40 x 3 plate with two overlapping cylindrical bosses on it, each (radius,
     x, y, height): the lower boss's top is a crescent, bounded by its rim (convex) and

@@ -4823,6 +4823,34 @@ def test_a_corner_patch_meeting_a_face_at_an_angle_is_filled_through_that_edge()
                 assert _normal_jump(solid, e, 21) < fl.cn.MAX_SEAM
 
 
+def test_a_corner_patch_whose_hole_runs_into_another_names_it():
+    """shapes.hole_through_pocket_floor's rim at R = 1.799 (--random-plates 40 --seed 44,
+    part 29): the hole's rim fillet runs into the pocket's walls, and OCCT ends it in
+    three corner patches, two of which share an edge. Replaced together they leave one
+    hole, whose edges corners.holes parts between them, so neither part closes. The
+    fillet at that corner is kept, and its reason now names the other patch (it said
+    only "the 3 edges around the hole do not form one loop"). Checked independently on
+    OCCT's own fillet of the rim: its two patches there share an edge."""
+    s, rim = shapes.hole_through_pocket_floor()
+    solid, rep = C2Blend.fillet_report(s, [rim], 1.799)
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    occt = s.makeFillet(1.799, [s.getElement(rim)])
+    patches = [f for f in occt.Faces if isinstance(f.Surface, Part.BSplineSurface)
+               and not any(f.isSame(g) for g in s.Faces)]
+    joined = [f for f in patches if any(e.isSame(x) for g in patches if g is not f
+                                        for e in f.Edges for x in g.Edges)]
+    assert len(patches) == 3 and len(joined) == 2
+    (kept,) = [k for k in rep["kept_occt_faces"] if k["where"] == "Shape.%s" % rim]
+    m = re.search(r"the corner patch at \(([^)]*)\) cannot be replaced: .*; its hole runs "
+                  r"into that of the corner patch at \(([^)]*)\), with which OCCT's patch "
+                  r"shares an edge, and two patches' hole is not filled as one$", kept["reason"])
+    assert m, kept["reason"]
+    assert {m.group(1), m.group(2)} == {"%.4g, %.4g, %.4g" % tuple(f.CenterOfMass)
+                                        for f in joined}
+
+
 def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept(monkeypatch):
     """shapes.tall_step's ten edges at R = 2.5: at the vertex (10.58, 0, 7.90), where
     the riser's convex edge meets the step's concave one, the setback corner's 4-sided

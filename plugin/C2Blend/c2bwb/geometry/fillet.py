@@ -1406,7 +1406,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                                                        for p in patches))
         except cn.Unfilled:
             loops = []  # a sewing gap: reported below
-        fills = [_Fill(holed, p, loop, _at_corner(p, blended))
+        fills = [_Fill(holed, p, loop, _at_corner(p, blended), _joined(p, patches))
                  for p, loop in zip(patches, loops)]
 
     def closed():  # the solid, sewn again with the fillings as they are now
@@ -1690,14 +1690,18 @@ def _c0_unreliable(solid):
 class _Fill:
     """The plate filling (face) of a corner patch's hole (edges loop of the open
     shell), with the trials tried (corners.fill). Raises Unassembled for
-    `blends`, those ending there, when the hole cannot be filled."""
+    `blends`, those ending there, when the hole cannot be filled; the message names
+    the `joined` patches (_joined), whose holes run into this one's."""
 
-    def __init__(self, shell, patch, loop, blends):
+    def __init__(self, shell, patch, loop, blends, joined=()):
         self.shell, self.patch, self.loop = shell, patch, loop
         self.tried, self.face, self.error = [], None, None
         if not self.refill():
-            raise Unassembled(blends, "the %s cannot be replaced: %s"
-                              % (patch.where(), self.error))
+            raise Unassembled(blends, "the %s cannot be replaced: %s%s"
+                              % (patch.where(), self.error, "".join(
+                                  "; its hole runs into that of the %s, with which OCCT's "
+                                  "patch shares an edge, and two patches' hole is not "
+                                  "filled as one" % q.where() for q in joined)))
 
     def refill(self):
         """Fill again with the trials not yet tried; False when none is left or none
@@ -1839,6 +1843,14 @@ def _sewn(faces):
     sewn = Part.Compound(faces)
     sewn.sewShape()
     return sewn.Shells if sewn.ShapeType != "Shell" else [sewn]
+
+
+def _joined(patch, patches):
+    """The other corner patches of `patches` whose OCCT face shares an edge with that
+    of `patch` (where a fillet between two corners vanishes): replaced together, they
+    leave one hole, whose edges corners.holes parts between them."""
+    return [q for q in patches if q is not patch and any(
+        e.isSame(x) for e in patch.face.Edges for x in q.face.Edges)]
 
 
 def _at_corner(patch, blended):
