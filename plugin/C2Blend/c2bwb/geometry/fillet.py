@@ -1406,7 +1406,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                                                        for p in patches))
         except cn.Unfilled:
             loops = []  # a sewing gap: reported below
-        fills = [_Fill(holed, p, loop, _at_corner(p, blended), _joined(p, patches))
+        fills = [_Fill(holed, p, loop, _at_corner(p, blended), patches)
                  for p, loop in zip(patches, loops)]
 
     def closed():  # the solid, sewn again with the fillings as they are now
@@ -1691,9 +1691,9 @@ class _Fill:
     """The plate filling (face) of a corner patch's hole (edges loop of the open
     shell), with the trials tried (corners.fill). Raises Unassembled for
     `blends`, those ending there, when the hole cannot be filled; the message names
-    the `joined` patches (_joined), whose holes run into this one's."""
+    those of the other `patches` whose holes run into this one's (_joined)."""
 
-    def __init__(self, shell, patch, loop, blends, joined=()):
+    def __init__(self, shell, patch, loop, blends, patches=()):
         self.shell, self.patch, self.loop = shell, patch, loop
         self.tried, self.face, self.error = [], None, None
         if not self.refill():
@@ -1701,7 +1701,7 @@ class _Fill:
                               % (patch.where(), self.error, "".join(
                                   "; its hole runs into that of the %s, with which OCCT's "
                                   "patch shares an edge, and two patches' hole is not "
-                                  "filled as one" % q.where() for q in joined)))
+                                  "filled as one" % q.where() for q in _joined(patch, patches))))
 
     def refill(self):
         """Fill again with the trials not yet tried; False when none is left or none
