@@ -135,9 +135,10 @@ def fill(shell, edges, guide, trials=TRIALS, creases=()):
     pinned trial) only where none of the others is (TRIALS). A filling that rises
     beyond a plane it is tangent to by more than twice its seams' gap ranks after every
     one that does not; one that spans more than MAX_AREA, or GUIDE_AREA times the
-    guide, is never kept, and its seams are not measured. Through the edges on `creases` (edges) only, not tangent
-    there (rollingball.CornerPatch.creases: a setback corner's edge on the face whose
-    rim stays sharp, setback.py, or where OCCT's patch meets a face at an angle).
+    guide, is never kept, and its seams are not measured. Through the edges on
+    `creases` (edges) only, not tangent there (rollingball.CornerPatch.creases: a
+    setback corner's edge on the face whose rim stays sharp, setback.py, or where
+    OCCT's patch meets a face at an angle).
     Built in a hidden temporary document, which is closed again; the active document
     is left as it was. Raises Unfilled."""
     edges = _in_order(edges)
