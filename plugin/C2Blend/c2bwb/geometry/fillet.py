@@ -217,10 +217,11 @@ def check_solid(shape, label):
                               len(solids), loose, advice), label)
     if not all(sh.isClosed() for sh in solids[0].Shells):
         free = [ck.element_name(shape, e, "Edge") for e in _free_edges(solids[0])]
-        raise C2BlendError("the solid is not closed: its shell is open along %s (edge%s with "
-                           "one face), so it is not valid: repair or rebuild it first; Part > "
-                           "Check geometry shows what is wrong"
-                           % (_listed(free, 5), "" if len(free) == 1 else "s"), label)
+        where = (" along %s (edge%s with one face)" % (_listed(free, 5), "" if len(free) == 1
+                                                       else "s")) if free else ""
+        raise C2BlendError("the solid is not closed: its shell is open%s, so it is not valid: "
+                           "repair or rebuild it first; Part > Check geometry shows what is "
+                           "wrong" % where, label)
     if solids[0].Volume < 0:
         raise C2BlendError("the solid is inside out: its faces point inwards (volume %.6g); "
                            "reverse it first (shape.reversed())" % solids[0].Volume, label)
