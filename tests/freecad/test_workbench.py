@@ -1472,7 +1472,7 @@ def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
             [("the blend face of %s" % b.where, [b.where])]
         assert fl._rejected_fills(shell, [fill]) == [fill]  # its end section bounds it
     shell = rejecting(fl._patch_face(sewn, fill.patch))
-    p = fill.patch.face.CenterOfMass
+    p = fill.patch.faces[0].CenterOfMass
     assert where(fl._rejected_faces(shell, blended, [fill])) == \
         [("the plate filling of the corner patch at (%.4g, %.4g, %.4g)" % (p.x, p.y, p.z),
           sorted("Box.%s" % e for e in corner))]
@@ -4823,18 +4823,20 @@ def test_a_corner_patch_meeting_a_face_at_an_angle_is_filled_through_that_edge()
                 assert _normal_jump(solid, e, 21) < fl.cn.MAX_SEAM
 
 
-def test_a_corner_patch_whose_hole_runs_into_another_names_it():
+def test_corner_patches_that_share_an_edge_are_filled_as_one_hole():
     """shapes.hole_through_pocket_floor's rim at R = 1.799 (--random-plates 40 --seed 44,
     part 29): the hole's rim fillet runs into the pocket's walls, and OCCT ends it in
-    three corner patches, two of which share an edge. Replaced together they leave one
-    hole, whose edges corners.holes parts between them, so neither part closes. The
-    fillet at that corner is kept, and its reason now names the other patch (it said
-    only "the 3 edges around the hole do not form one loop"). Checked independently on
-    OCCT's own fillet of the rim: its two patches there share an edge."""
+    three corner patches, two of which share an edge (checked on OCCT's own fillet of
+    the rim). Replaced together they leave one hole of 6 edges, which corners.holes
+    parted between them, so neither part closed and the fillet at that corner was kept.
+    They are now one CornerPatch, whose hole one plate fills: the whole rim is blended,
+    and the filling spans about what OCCT's two patches do (within 10%), meeting the
+    blends and faces within corners.MAX_SEAM."""
     s, rim = shapes.hole_through_pocket_floor()
     solid, rep = C2Blend.fillet_report(s, [rim], 1.799)
     assert_valid(solid)
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert rep["kept_occt_faces"] == []
     assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
     occt = s.makeFillet(1.799, [s.getElement(rim)])
     patches = [f for f in occt.Faces if isinstance(f.Surface, Part.BSplineSurface)
@@ -4842,13 +4844,15 @@ def test_a_corner_patch_whose_hole_runs_into_another_names_it():
     joined = [f for f in patches if any(e.isSame(x) for g in patches if g is not f
                                         for e in f.Edges for x in g.Edges)]
     assert len(patches) == 3 and len(joined) == 2
-    (kept,) = [k for k in rep["kept_occt_faces"] if k["where"] == "Shape.%s" % rim]
-    m = re.search(r"the corner patch at \(([^)]*)\) cannot be replaced: .*; its hole runs "
-                  r"into that of the corner patch at \(([^)]*)\), with which OCCT's patch "
-                  r"shares an edge, and two patches' hole is not filled as one$", kept["reason"])
-    assert m, kept["reason"]
-    assert {m.group(1), m.group(2)} == {"%.4g, %.4g, %.4g" % tuple(f.CenterOfMass)
-                                        for f in joined}
+    at = ["(%.4g, %.4g, %.4g)" % tuple(f.CenterOfMass) for f in joined]
+    (both,) = [c for c in rep["corner_patches"] if c["where"].startswith("corner patches")]
+    assert both["where"] in ("corner patches at %s and %s" % (at[0], at[1]),
+                             "corner patches at %s and %s" % (at[1], at[0]))
+    assert len(rep["corner_patches"]) == 2
+    filling = solid.getElement(both["face"])
+    assert abs(filling.Area / sum(f.Area for f in joined) - 1.0) < 0.1
+    assert both["g1"] < fl.cn.MAX_SEAM and both["g0"] < 1e-4
+    assert both["verdict"] != "G2"  # a plate filling, never claimed G2
 
 
 def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept(monkeypatch):

@@ -69,7 +69,7 @@ ONCE, TWICE = 1, 2  # a trial's Iterations: the plate solved once, or solved aga
 # 5.3e-4 to 9.0e-3 rad, one failing; through a 4 grid's, 3.0 to 3.1. At a setback
 # corner OCCT's face spans only part of the hole: at shapes.tall_step's (R = 2.5) the
 # plates through its pins spanned 14.4 to 15.2 and turned by 0.028 to 0.13 rad, so no
-# plate is pinned there (fillet._Fill passes no guide).
+# plate is pinned there (rollingball.CornerPatch.guide is None).
 UNPINNED, PINNED = False, True
 GUIDE_GRID = 8
 _SIZES = ((12, 30), (10, 30), (13, 30), (12, 40), (10, 40), (13, 40))

@@ -1301,7 +1301,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     check's faults belong (_rejected_faces, _bop_faulty)."""
     diag = shape.BoundBox.DiagonalLength
     tol = 1e-7 * diag
-    drop = [f for b in blended for f in b.chain.faces] + [p.face for p in patches]
+    drop = [f for b in blended for f in b.chain.faces] + [f for p in patches for f in p.faces]
     kept_fillets = [f for f in fillet_faces if not any(f.isSame(d) for d in drop)]
     faces_out = [b.face for b in blended]
     # the original faces the blends touch, with the blend's edges lying on each
@@ -1403,11 +1403,11 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         holed = [s for s in shells if not s.isClosed()]  # (a void's shell may have some)
         holed = holed[0] if len(holed) == 1 else Part.Compound(holed)
         try:
-            loops = cn.holes(holed, patches, 0.5 * min(p.face.BoundBox.DiagonalLength
-                                                       for p in patches))
+            loops = cn.holes(holed, patches, 0.5 * min(f.BoundBox.DiagonalLength
+                                                       for p in patches for f in p.faces))
         except cn.Unfilled:
             loops = []  # a sewing gap: reported below
-        fills = [_Fill(holed, p, loop, _at_corner(p, blended), patches)
+        fills = [_Fill(holed, p, loop, _at_corner(p, blended))
                  for p, loop in zip(patches, loops)]
 
     def closed():  # the solid, sewn again with the fillings as they are now
@@ -1691,18 +1691,14 @@ def _c0_unreliable(solid):
 class _Fill:
     """The plate filling (face) of a corner patch's hole (edges loop of the open
     shell), with the trials tried (corners.fill). Raises Unassembled for
-    `blends`, those ending there, when the hole cannot be filled; the message names
-    those of the other `patches` whose holes run into this one's (_joined)."""
+    `blends`, those ending there, when the hole cannot be filled."""
 
-    def __init__(self, shell, patch, loop, blends, patches=()):
+    def __init__(self, shell, patch, loop, blends):
         self.shell, self.patch, self.loop = shell, patch, loop
         self.tried, self.face, self.error = [], None, None
         if not self.refill():
-            raise Unassembled(blends, "the %s cannot be replaced: %s%s"
-                              % (patch.where(), self.error, "".join(
-                                  "; its hole runs into that of the %s, with which OCCT's "
-                                  "patch shares an edge, and two patches' hole is not "
-                                  "filled as one" % q.where() for q in _joined(patch, patches))))
+            raise Unassembled(blends, "the %s cannot be replaced: %s"
+                              % (patch.where(), self.error))
 
     def refill(self):
         """Fill again with the trials not yet tried; False when none is left or none
@@ -1711,9 +1707,8 @@ class _Fill:
         if not left:
             return False
         try:
-            # OCCT's face at a setback corner spans only part of the hole: no guide there
-            guide = None if self.patch.setback else self.patch.face
-            self.face, trial = cn.fill(self.shell, self.loop, guide, left, self.patch.creases)
+            self.face, trial = cn.fill(self.shell, self.loop, self.patch.guide, left,
+                                       self.patch.creases)
         except cn.Unfilled as ex:
             self.error = str(ex)
             return False
@@ -1846,14 +1841,6 @@ def _sewn(faces):
     return sewn.Shells if sewn.ShapeType != "Shell" else [sewn]
 
 
-def _joined(patch, patches):
-    """The other corner patches of `patches` whose OCCT face shares an edge with that
-    of `patch` (where a fillet between two corners vanishes): replaced together, they
-    leave one hole, whose edges corners.holes parts between them."""
-    return [q for q in patches if q is not patch and any(
-        e.isSame(x) for e in patch.face.Edges for x in q.face.Edges)]
-
-
 def _at_corner(patch, blended):
     """The blends of `blended` that replace fillets ending at the corner patch."""
     return [b for b in blended if any(b.source is c for c in patch.chains)]
@@ -1881,9 +1868,9 @@ def _corner_check(solid, patch, scales):
 
 def _patch_face(solid, patch):
     """The face of `solid` that fills the hole at the corner patch: the face nearest to
-    a point of the patch near its centre."""
-    return _nearest_face(solid, patch.face.Surface.value(*patch.face.Surface.parameter(
-        patch.face.CenterOfMass)))
+    a point of the patch (of its first face) near its centre."""
+    face = patch.faces[0]
+    return _nearest_face(solid, face.Surface.value(*face.Surface.parameter(face.CenterOfMass)))
 
 
 def _nearest_face(solid, point):
@@ -2464,7 +2451,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         if not any(p is q for q in filled):
             kept.append({"where": p.where(), "reason": "OCCT's corner patch, kept with the "
                          "fillets that meet there" if p.setback is None else
-                         BETWEEN + _vertex_hint(shape, names, p.face, radius)})
+                         BETWEEN + _vertex_hint(shape, names, p.faces[0], radius)})
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,

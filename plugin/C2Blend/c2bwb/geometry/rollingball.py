@@ -362,34 +362,45 @@ class Run:
 class CornerPatch:
     """OCCT's corner patch where three or more fillets meet at a vertex, or its face
     between a convex and a concave fillet that is set back (a RollingBallFace with
-    patch set): face; chains: the FilletChains ending at it; setback: None or the
-    setback.Setback; tools: the edges bounding the faces around it anew (face's own,
-    or the setback's); region: where the hole its filling fills lies (face, with the
-    setback's edges); creases: the edges its filling only passes through, not tangent
-    to the faces there: the setback's edge on the face whose rim stays sharp, or the
-    face's own edges where it meets a face at an angle (its RollingBallFace's ends). It
-    is replaced by a filling (corners.py) when any of those chains is blended."""
+    patch set), or OCCT's corner patches that share an edge (where a fillet between two
+    corners vanishes: replaced together, they leave one hole): faces; chains: the
+    FilletChains ending at them; setback: None or the setback.Setback (of a single
+    face); tools: the edges bounding the faces around it anew (the faces' own but those
+    they share, or the setback's); region: where the hole its filling fills lies (the
+    faces, with the setback's edges); creases: the edges its filling only passes
+    through, not tangent to the faces there: the setback's edge on the face whose rim
+    stays sharp, or the faces' own edges where they meet a face at an angle (their
+    RollingBallFaces' ends); guide: the face the filling may be pinned to (corners.fill),
+    OCCT's single patch, or None: at a setback corner OCCT's face spans only part of
+    the hole, and pins follow one face. It is replaced by a filling (corners.py) when
+    any of those chains is blended."""
 
-    def __init__(self, rbf, chains_):
-        self.face = rbf.face
-        self.chains = [c for c in chains_ if any(p is rbf for _, p in c.corners)]
-        self.setback = rbf.setback
-        # the edges bounding the faces around it anew, the shape its hole lies at, and
-        # the edges its filling only passes through
-        self.tools = self.setback.tools if self.setback else self.face.Edges
-        self.region = Part.Compound([self.face] + self.tools) if self.setback else self.face
-        self.creases = [self.setback.crease] if self.setback else [e for e, _ in rbf.ends]
+    def __init__(self, rbfs, chains_):
+        self.faces = [r.face for r in rbfs]
+        self.chains = [c for c in chains_ if any(p is r for _, p in c.corners for r in rbfs)]
+        self.setback = rbfs[0].setback if len(rbfs) == 1 else None
+        own = [e for f in self.faces for e in f.Edges]
+        self.tools = self.setback.tools if self.setback else \
+            [e for e in own if sum(e.isSame(x) for x in own) == 1]
+        self.region = Part.Compound(self.faces + (self.tools if self.setback else []))
+        self.creases = [self.setback.crease] if self.setback else \
+            [e for r in rbfs for e, _ in r.ends]
+        self.guide = self.faces[0] if len(self.faces) == 1 and not self.setback else None
 
     def where(self):
-        """'corner patch at (x, y, z)', for messages."""
-        p = self.face.CenterOfMass
-        return "corner patch at (%.4g, %.4g, %.4g)" % (p.x, p.y, p.z)
+        """'corner patch at (x, y, z)', or 'corner patches at (x, y, z) and (x, y, z)',
+        for messages."""
+        at = ["(%.4g, %.4g, %.4g)" % tuple(f.CenterOfMass) for f in self.faces]
+        if len(at) == 1:
+            return "corner patch at " + at[0]
+        return "corner patches at %s and %s" % (", ".join(at[:-1]), at[-1])
 
 
 def chains(rbfs):
     """Group RollingBallFaces into FilletChains by their tangent links; a corner patch
     ends the chains that join it (or meet it at an angle: a setback corner's). Returns
-    ([FilletChain], [CornerPatch])."""
+    ([FilletChain], [CornerPatch]), one CornerPatch for the corner patches that share
+    an edge."""
     patches = [r for r in rbfs if r.patch]
     rbfs = [r for r in rbfs if not r.patch]
 
@@ -410,5 +421,12 @@ def chains(rbfs):
         merged = [r] + [m for g in linked for m in g]
         groups = [g for g in groups if not any(g is x for x in linked)] + [merged]
     out = [FilletChain(g) for g in groups]
-    return out, [CornerPatch(p, out) for p in patches]
+    joined = []  # the patches, those that share an edge (none set back) together
+    for p in patches:
+        meets = [g for g in joined if p.setback is None and any(
+            q.setback is None and any(e.isSame(x) for e in p.face.Edges for x in q.face.Edges)
+            for q in g)]
+        joined = [g for g in joined if not any(g is m for m in meets)] + \
+            [[q for m in meets for q in m] + [p]]
+    return out, [CornerPatch(g, out) for g in joined]
 
