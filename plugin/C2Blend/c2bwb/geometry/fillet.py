@@ -52,8 +52,8 @@ from . import solids as sl
 from . import setback as sb
 from . import strips as st
 from .knots import at_corner_balls, at_face_changes, side_jump, split_at_knots
-from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, midpoint,
-                          new_faces, off_boundary)
+from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, interior_points, joined,
+                          midpoint, new_faces, off_boundary)
 from .surface import (Frame, angle, face_distance, frame_at_point, leaving, mesh_area,
                       off_surface, only_c0, periods, project)
 from .trimlines import ROWS, pair_rows, pointwise_shape, shape_for, spec_from_rows
@@ -2417,7 +2417,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
 
     hints = {}  # for _corner_hint
     while True:  # a blend that cannot be cut back or cut into its faces is kept as OCCT's
-        filled = [p for p in patches if _at_corner(p, blended)]
+        filled = joined([p for p in patches if _at_corner(p, blended)], all_chains)
         failed = ends.trim(blended, lambda f: _original(shape, f))
         if not failed:
             t_solve = t_solve or time.perf_counter()
@@ -2448,7 +2448,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         measured["seconds"] = time.perf_counter() - t_assemble
     checks, corner_checks = measured["checks"]["trimlines"], measured["checks"]["corner_patches"]
     for p in patches:  # not filled: OCCT's corner patch, or its face between two fillets
-        if not any(p is q for q in filled):
+        if not any(r is x for q in filled for x in q.rbfs for r in p.rbfs):
             kept.append({"where": p.where(), "reason": "OCCT's corner patch, kept with the "
                          "fillets that meet there" if p.setback is None else
                          BETWEEN + _vertex_hint(shape, names, p.faces[0], radius)})

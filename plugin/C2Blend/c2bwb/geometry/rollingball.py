@@ -363,19 +363,20 @@ class CornerPatch:
     """OCCT's corner patch where three or more fillets meet at a vertex, or its face
     between a convex and a concave fillet that is set back (a RollingBallFace with
     patch set), or OCCT's corner patches that share an edge (where a fillet between two
-    corners vanishes: replaced together, they leave one hole): faces; chains: the
-    FilletChains ending at them; setback: None or the setback.Setback (of a single
-    face); tools: the edges bounding the faces around it anew (the faces' own but those
-    they share, or the setback's); region: where the hole its filling fills lies (the
-    faces, with the setback's edges); creases: the edges its filling only passes
-    through, not tangent to the faces there: the setback's edge on the face whose rim
-    stays sharp, or the faces' own edges where they meet a face at an angle (their
-    RollingBallFaces' ends); guide: the face the filling may be pinned to (corners.fill),
-    OCCT's single patch, or None: at a setback corner OCCT's face spans only part of
-    the hole, and pins follow one face. It is replaced by a filling (corners.py) when
-    any of those chains is blended."""
+    corners vanishes: replaced together, they leave one hole; joined). rbfs: their
+    RollingBallFaces; faces; chains: the FilletChains ending at them; setback: None or
+    the setback.Setback (of a single face); tools: the edges bounding the faces around
+    it anew (the faces' own but those they share, or the setback's); region: where the
+    hole its filling fills lies (the faces, with the setback's edges); creases: the
+    edges its filling only passes through, not tangent to the faces there: the
+    setback's edge on the face whose rim stays sharp, or the faces' own edges where
+    they meet a face at an angle (their RollingBallFaces' ends); guide: the face the
+    filling may be pinned to (corners.fill), OCCT's single patch, or None: at a setback
+    corner OCCT's face spans only part of the hole, and pins follow one face. It is
+    replaced by a filling (corners.py) when any of those chains is blended."""
 
     def __init__(self, rbfs, chains_):
+        self.rbfs = rbfs
         self.faces = [r.face for r in rbfs]
         self.chains = [c for c in chains_ if any(p is r for _, p in c.corners for r in rbfs)]
         self.setback = rbfs[0].setback if len(rbfs) == 1 else None
@@ -399,8 +400,7 @@ class CornerPatch:
 def chains(rbfs):
     """Group RollingBallFaces into FilletChains by their tangent links; a corner patch
     ends the chains that join it (or meet it at an angle: a setback corner's). Returns
-    ([FilletChain], [CornerPatch]), one CornerPatch for the corner patches that share
-    an edge."""
+    ([FilletChain], [CornerPatch]), a CornerPatch per patch (see joined)."""
     patches = [r for r in rbfs if r.patch]
     rbfs = [r for r in rbfs if not r.patch]
 
@@ -421,12 +421,21 @@ def chains(rbfs):
         merged = [r] + [m for g in linked for m in g]
         groups = [g for g in groups if not any(g is x for x in linked)] + [merged]
     out = [FilletChain(g) for g in groups]
-    joined = []  # the patches, those that share an edge (none set back) together
+    return out, [CornerPatch([p], out) for p in patches]
+
+
+def joined(patches, chains_):
+    """`patches` (CornerPatch), each set of those that share an edge (none set back)
+    made one CornerPatch (of chains_, the FilletChains): replaced together, they leave
+    one hole, where a fillet between two corners vanishes. The others are returned as
+    they are."""
+    groups = []
     for p in patches:
-        meets = [g for g in joined if p.setback is None and any(
-            q.setback is None and any(e.isSame(x) for e in p.face.Edges for x in q.face.Edges)
-            for q in g)]
-        joined = [g for g in joined if not any(g is m for m in meets)] + \
+        meets = [g for g in groups if p.setback is None and any(
+            q.setback is None and any(e.isSame(x) for f in p.faces for e in f.Edges
+                                      for h in q.faces for x in h.Edges) for q in g)]
+        groups = [g for g in groups if not any(g is m for m in meets)] + \
             [[q for m in meets for q in m] + [p]]
-    return out, [CornerPatch(g, out) for g in joined]
+    return [g[0] if len(g) == 1 else CornerPatch([r for q in g for r in q.rbfs], chains_)
+            for g in groups]
 
