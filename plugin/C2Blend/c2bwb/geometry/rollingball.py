@@ -379,7 +379,7 @@ class CornerPatch:
         self.rbfs = rbfs
         self.faces = [r.face for r in rbfs]
         self.chains = [c for c in chains_ if any(p is r for _, p in c.corners for r in rbfs)]
-        self.setback = rbfs[0].setback if len(rbfs) == 1 else None
+        self.setback = rbfs[0].setback  # (joined: none is set back)
         own = [e for f in self.faces for e in f.Edges]
         self.tools = self.setback.tools if self.setback else \
             [e for e in own if sum(e.isSame(x) for x in own) == 1]
@@ -415,12 +415,8 @@ def chains(rbfs):
         return rest
     for r in rbfs:
         r.ends, r.links = at_patch(r.ends, r), at_patch(r.links, r)
-    groups = []
-    for r in rbfs:
-        linked = [g for g in groups if any(nb.isSame(m.face) for m in g for _, nb in r.links)]
-        merged = [r] + [m for g in linked for m in g]
-        groups = [g for g in groups if not any(g is x for x in linked)] + [merged]
-    out = [FilletChain(g) for g in groups]
+    out = [FilletChain(g) for g in _grouped(
+        rbfs, lambda r, m: any(nb.isSame(m.face) for _, nb in r.links))]
     return out, [CornerPatch([p], out) for p in patches]
 
 
@@ -429,13 +425,20 @@ def joined(patches, chains_):
     made one CornerPatch (of chains_, the FilletChains): replaced together, they leave
     one hole, where a fillet between two corners vanishes. The others are returned as
     they are."""
-    groups = []
-    for p in patches:
-        meets = [g for g in groups if p.setback is None and any(
-            q.setback is None and any(e.isSame(x) for f in p.faces for e in f.Edges
-                                      for h in q.faces for x in h.Edges) for q in g)]
-        groups = [g for g in groups if not any(g is m for m in meets)] + \
-            [[q for m in meets for q in m] + [p]]
+    def share(p, q):
+        return p.setback is None and q.setback is None and any(
+            e.isSame(x) for f in p.faces for e in f.Edges for g in q.faces for x in g.Edges)
     return [g[0] if len(g) == 1 else CornerPatch([r for q in g for r in q.rbfs], chains_)
-            for g in groups]
+            for g in _grouped(patches, share)]
+
+
+def _grouped(items, meets):
+    """`items` in groups, each item with those before it for which meets(item, that)
+    holds, and with their groups: [[item, ...]], each group's latest item first."""
+    groups = []
+    for x in items:
+        linked = [g for g in groups if any(meets(x, y) for y in g)]
+        groups = [g for g in groups if not any(g is m for m in linked)] + \
+            [[x] + [y for g in linked for y in g]]
+    return groups
 
