@@ -19,6 +19,7 @@ from c2bwb.errors import C2BlendError as Error
 from c2bwb.geometry import blendfaces as _blendfaces
 from c2bwb.geometry import check as _check
 from c2bwb.geometry import fillet as _fillet
+from c2bwb.geometry import inputs as _inputs
 
 __all__ = ["Error", "fillet", "fillet_report", "radius_for_setback", "blend", "blend_solid",
            "check", "format_report"]
@@ -53,7 +54,7 @@ def radius_for_setback(shape, edges, setback, label="Shape"):
     """The radius whose fillet of edges lies `setback` from each edge, across it (exact
     between planes: R = setback / tan(alpha / 2), alpha the angle between the faces'
     normals); edges needing different radii raise C2Blend.Error."""
-    return _fillet.radius_for_setback(shape, edges, setback, label)
+    return _inputs.radius_for_setback(shape, edges, setback, label)
 
 
 def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1, 1, 1, 1),

@@ -1042,7 +1042,7 @@ def document_state(doc):
 
 
 def losing_far_face(sewn, shape, edge):
-    """A stand-in for the fillet's sewing function `sewn` (fillet._sewn) that first loses
+    """A stand-in for the fillet's sewing function `sewn` (assembly._sewn) that first loses
     the face of `shape` farthest from `edge`: the shell then has free edges that touch
     no blend, so the sewing fails."""
     far = max(shape.Faces, key=lambda f: f.distToShape(edge)[0]).CenterOfMass

@@ -10,7 +10,7 @@ import pytest
 
 import shapes
 from c2bwb.errors import C2BlendError
-from c2bwb.geometry import fillet as fl
+from c2bwb.geometry import assembly, fillet as fl
 from c2bwb.objects import make
 
 
@@ -371,8 +371,8 @@ def test_failed_sewing_leaves_document_unchanged(doc, monkeypatch):
     object and edge, and the document is left exactly as it was."""
     box = doc.getObject("Box")
     before, undo = shapes.document_state(doc), doc.UndoCount
-    monkeypatch.setattr(fl, "_sewn",
-                        shapes.losing_far_face(fl._sewn, box.Shape, box.Shape.Edge1))
+    monkeypatch.setattr(assembly, "_sewn",
+                        shapes.losing_far_face(assembly._sewn, box.Shape, box.Shape.Edge1))
     with pytest.raises(C2BlendError, match=r"^Box\.Edge1: sewing the blend faces .* failed"):
         make.make_fillet(box, ["Edge1"], 2.0)
     assert shapes.document_state(doc) == before
@@ -386,8 +386,8 @@ def test_failed_sewing_on_recompute_keeps_the_previous_shape(doc, monkeypatch):
     box = doc.getObject("Box")
     f = make.make_fillet(box, ["Edge1"], 2.0)
     good = _shape_of(doc, f)
-    monkeypatch.setattr(fl, "_sewn",
-                        shapes.losing_far_face(fl._sewn, box.Shape, box.Shape.Edge1))
+    monkeypatch.setattr(assembly, "_sewn",
+                        shapes.losing_far_face(assembly._sewn, box.Shape, box.Shape.Edge1))
     f.Radius = 3.0
     doc.recompute()
     assert "Invalid" in f.State

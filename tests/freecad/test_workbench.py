@@ -24,6 +24,8 @@ import shapes
 from c2bwb.errors import C2BlendError
 from c2bwb.geometry import fillet as fl, trimlines, check as ck, rollingball as rb
 from c2bwb.geometry import strips as st, surface as sf
+from c2bwb.geometry import assembly, bopcheck as bc, corners as cn, diagnose, recut, solve
+from c2bwb.geometry import setback as sb
 from c2bwb.objects import animate, make
 
 V = FreeCAD.Vector
@@ -633,7 +635,7 @@ def test_end_face_that_cannot_grow_keeps_occt_face(monkeypatch):
     """Fault injection: no growth region can be built for the L bracket's inner edge's
     end faces. OCCT's face is kept with the reason, the solid (OCCT's, with its own
     grown end faces) is valid and the verdict is G1, never G2."""
-    monkeypatch.setattr(fl, "_growth", lambda face, edge, tol, across=None: None)
+    monkeypatch.setattr(recut, "_growth", lambda face, edge, tol, across=None: None)
     s, _, inner = shapes.l_bracket()
     solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
     assert_valid(solid)
@@ -1061,8 +1063,8 @@ def test_rolling_ball_failing_at_every_radius(monkeypatch):
     """When OCCT fails whatever the radius (fault injection), the message says so
     instead of blaming the radius. The radii are tried in another process
     (bc.trial_fillet), where the fault is injected too."""
-    monkeypatch.setattr(fl, "_rolling_ball", lambda shape, edges, radius: (None, "injected"))
-    monkeypatch.setattr(fl.bc, "trial_fillet", lambda shape, edges, radius: (False, "injected"))
+    monkeypatch.setattr(diagnose, "rolling_ball", lambda shape, edges, radius: (None, "injected"))
+    monkeypatch.setattr(bc, "trial_fillet", lambda shape, edges, radius: (False, "injected"))
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: OCCT's rolling-ball fillet of radius 2 "
                        r"failed \(injected\), and so does every radius from 0\.00195 to 17\.3: "
                        r"the rolling ball cannot follow these edges, whatever the radius"):
@@ -1138,7 +1140,7 @@ def _assert_set_back(solid, rep, radius, p0, along_rim, along_trimline, out):
     assert [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")] == []
     assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
     (corner,) = [c for c in rep["corner_patches"] if "crease" in c]
-    assert corner["crease"]["edges"] == 1 and corner["g1"] < fl.cn.MAX_SEAM
+    assert corner["crease"]["edges"] == 1 and corner["g1"] < cn.MAX_SEAM
     a, b = p0 + along_rim * radius, p0 + along_trimline * radius
     assert min((v.Point - a).Length for v in solid.Vertexes) < 1e-6
     assert min((v.Point - b).Length for v in solid.Vertexes) < 1e-6
@@ -1179,7 +1181,7 @@ def test_the_tips_of_a_crescent_between_two_bosses_are_set_back(lower, taller, r
     ex, ey = (x2 - x1) / d, (y2 - y1) / d
     top = 3 + h1
     for c in corners:
-        assert c["crease"]["edges"] == 1 and c["g1"] < fl.cn.MAX_SEAM
+        assert c["crease"]["edges"] == 1 and c["g1"] < cn.MAX_SEAM
         wall = solid.getElement(c["crease"]["face"]).Surface
         assert isinstance(wall, Part.Cylinder) and wall.Radius == pytest.approx(r1)
     for side in (-1, 1):
@@ -1203,7 +1205,7 @@ def test_a_corner_patch_edge_crossing_a_corner_of_a_taller_boss_s_side_grows_it(
     an edge on the taller boss's side T that crosses T's corner V at the lower top
     (as at a gusset's foot). The region it cuts off that corner, by which T grows, was
     not made: the edge's part off T ends 3e-7 and 5e-7 from the legs along T's edges,
-    which FreeCAD's sorting of the edges does not join (fillet._loop), so T could not
+    which FreeCAD's sorting of the edges does not join (recut._loop), so T could not
     be cut and every blend on it was kept. Now the region is a small triangle at V
     (the crescent's tip, closed form), and the corner is filled. The setback at the
     other tip is not asserted: its filling turns by 1e-3 to over 1e-2 rad (the
@@ -1229,14 +1231,14 @@ def test_a_corner_patch_edge_crossing_a_corner_of_a_taller_boss_s_side_grows_it(
     ff = rb.new_faces(s, result)
     patch = next(f for f in ff if rb.RollingBallFace(result, f, ff).patch)
     crossing = [e for e in patch.Edges if not e.Degenerated
-                and fl._face_under(e, [side], tol) is not None
-                and not fl._edge_on_face(e, side, tol)]
+                and recut.face_under(e, [side], tol) is not None
+                and not recut.edge_on_face(e, side, tol)]
     assert len(crossing) == 1
 
     def across(x):
         return next((g.Surface for g in s.ancestorsOfType(x, Part.Face)
                      if not g.isSame(side)), None)
-    parts = fl._parts(side, crossing[0], tol, across)
+    parts = recut.parts_along(side, crossing[0], tol, across)
     assert parts is not None
     (_, (region, corner, _)), = parts[1]
     assert (corner - tip).Length < 1e-9 and 0 < region.Area < 0.204 ** 2
@@ -1244,7 +1246,7 @@ def test_a_corner_patch_edge_crossing_a_corner_of_a_taller_boss_s_side_grows_it(
     assert_valid(solid)
     assert not any("cannot be cut along its blend" in k["reason"]
                    for k in rep["kept_occt_faces"])
-    assert any("crease" not in c and c["g1"] < fl.cn.MAX_SEAM for c in rep["corner_patches"])
+    assert any("crease" not in c and c["g1"] < cn.MAX_SEAM for c in rep["corner_patches"])
 
 
 def test_a_vertex_of_a_concave_and_a_convex_fillet_is_set_back(monkeypatch):
@@ -1255,7 +1257,7 @@ def test_a_vertex_of_a_concave_and_a_convex_fillet_is_set_back(monkeypatch):
     that edge, at (15 + R, 0, 10). The corner is set back by R along that edge and
     along that trimline, and filled: every trimline G2, nothing kept (_assert_set_back,
     the front face y = 0 as the top). Selected too, the third edge makes it a corner
-    of three fillets, filled (4 edges). Without the setback (fl.sb.Setback failing),
+    of three fillets, filled (4 edges). Without the setback (sb.Setback failing),
     both fillets are kept with OCCT's face between them, whose reason names that third
     edge."""
     s, concave, _ = shapes.step()
@@ -1271,11 +1273,11 @@ def test_a_vertex_of_a_concave_and_a_convex_fillet_is_set_back(monkeypatch):
     assert not rep["kept_occt_faces"] and len(rep["blends"]) == 3
     assert all(t["verdict"] == "G2" for t in rep["trimlines"])
     (corner,) = rep["corner_patches"]
-    assert corner["edges"] == 4 and corner["g1"] < fl.cn.MAX_SEAM and "crease" not in corner
+    assert corner["edges"] == 4 and corner["g1"] < cn.MAX_SEAM and "crease" not in corner
 
     def fails(*args):
         raise ValueError("injected")
-    monkeypatch.setattr(fl.sb, "Setback", fails)
+    monkeypatch.setattr(sb, "Setback", fails)
     solid, rep = C2Blend.fillet_report(s, [concave, rising], 1.0, label="Step")
     assert_valid(solid)
     assert not rep["blends"] and rep["verdict"] == "G1"
@@ -1293,7 +1295,7 @@ def test_an_edge_on_which_occt_fails_alone_is_named(monkeypatch):
     """Fault injection: OCCT's fillet fails whenever the box's Edge3 is among the edges;
     of the three selected, the message names that one. The fault is injected in the
     fillets tried in another process (bc.trial_fillet) too."""
-    real, real_trial = fl._rolling_ball, fl.bc.trial_fillet
+    real, real_trial = diagnose.rolling_ball, bc.trial_fillet
 
     def rolling_ball(shape, edges, radius):
         if any(e.isSame(shape.Edges[2]) for e in edges):
@@ -1305,8 +1307,8 @@ def test_an_edge_on_which_occt_fails_alone_is_named(monkeypatch):
             return False, "injected"
         return real_trial(shape, edges, radius)
 
-    monkeypatch.setattr(fl, "_rolling_ball", rolling_ball)
-    monkeypatch.setattr(fl.bc, "trial_fillet", trial)
+    monkeypatch.setattr(diagnose, "rolling_ball", rolling_ball)
+    monkeypatch.setattr(bc, "trial_fillet", trial)
     with pytest.raises(C2BlendError, match=r"whatever the radius\. It fails on Box\.Edge3 "
                                            r"alone$"):
         fl.fillet(shapes.box(), ["Edge1", "Edge3", "Edge5"], 2.0, label="Box")
@@ -1317,7 +1319,7 @@ def test_invalid_input_is_named_when_the_result_fails_the_check():
     self-intersecting, and the fillet of an edge far from it fails the check too. The
     message must say that the input already did, not blame the sewing alone."""
     s, edge = shapes.tangent_rib()
-    assert s.isValid() and "SelfIntersect" in fl.bc.problems(s)
+    assert s.isValid() and "SelfIntersect" in bc.problems(s)
     with pytest.raises(C2BlendError, match=r"(?s)Rib\.%s: the filleted solid is not valid after "
                        r"sewing .*SelfIntersect.*; the input solid already fails that check "
                        r".*, so repair or rebuild it first" % edge):
@@ -1343,7 +1345,7 @@ def resonant_rho(shape, edge):
     from c2bwb.geometry.contact import Contact
     ff = new_faces(shape, res)
     (chain,), _ = chains([RollingBallFace(res, f, ff) for f in ff])
-    rows0, rows1 = fl.sample_rows(chain, Contact(chain, 2.0), 32, 3, 1.0, "test")
+    rows0, rows1 = solve.sample_rows(chain, Contact(chain, 2.0), 32, 3, 1.0, "test")
     return -trimlines.v_length(rows0, rows1, True) ** 6
 
 
@@ -1373,7 +1375,7 @@ def test_failed_sewing_is_reported(monkeypatch):
     """Fault injection: the sewn faces lose the box's face opposite the fillet, so the
     shell has free edges that touch no blend. The fillet fails, naming the edge."""
     box = shapes.box()
-    monkeypatch.setattr(fl, "_sewn", shapes.losing_far_face(fl._sewn, box, box.Edge1))
+    monkeypatch.setattr(assembly, "_sewn", shapes.losing_far_face(assembly._sewn, box, box.Edge1))
     with pytest.raises(C2BlendError, match=r"Box\.Edge1: sewing the blend faces .* failed"):
         C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
 
@@ -1385,7 +1387,7 @@ def test_a_blend_that_cannot_be_sewn_is_kept_as_occts(monkeypatch):
     bracket's inner edge did this for real while end faces grew by a Boolean fuse,
     which split the end section where it runs within 1e-7 of the faces (G2 contact)."""
     box = shapes.box()
-    monkeypatch.setattr(fl, "_cut_face", lambda face, tools, sharp, legs, tol: [])
+    monkeypatch.setattr(recut, "cut_face", lambda face, tools, sharp, legs, tol: [])
     solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
     assert_valid(solid)
     assert not rep["blends"] and rep["verdict"] == "G1"
@@ -1401,12 +1403,12 @@ def test_blends_whose_faces_brepcheck_rejects_are_kept_as_occts(monkeypatch):
     """Fault injection: the unequal tee at R = 0.5 with the vertex gaps that cutting the
     big pipe along the trimline leaves (2.8e-6, see
     test_trimline_across_a_seam_at_its_own_vertex) not covered by the vertices'
-    tolerances (fillet._vertex_gap turned off). BRepCheck then rejects the cut face.
+    tolerances (recut._vertex_gap turned off). BRepCheck then rejects the cut face.
     FreeCAD's own message would list the faces' statuses ("No error"); the report names
     the face it rejects, and the blend is kept as OCCT's fillet with that reason: a
     valid solid, G1, OCCT's. (Plate fillings that BRepCheck rejected once tested this on
     the spline extrusion's corners; solved once (corners.FILL) they pass it.)"""
-    monkeypatch.setattr(fl, "_vertex_gap", lambda edge, pcurves: [])
+    monkeypatch.setattr(recut, "_vertex_gap", lambda edge, pcurves: [])
     s, names = shapes.unequal_tee()
     solid, rep = C2Blend.fillet_report(s, names, 0.5, label="Tee")
     assert_valid(solid)
@@ -1432,12 +1434,12 @@ def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
     as_occts); the faults I injected before the sewing were mended by it or caught by
     another check (the BOP check, or making the solid), so the names are tested here,
     on the sewn solid.
-    fillet._rejected_faces names the face as the report does and blames its own blend,
+    assembly._rejected_faces names the face as the report does and blames its own blend,
     the blends ending at the filling, or the blends sharing an edge with a face of the
-    box; the filling is remade (fillet._rejected_fills) when it, or a face sharing an
+    box; the filling is remade (assembly._rejected_fills) when it, or a face sharing an
     edge with it, is rejected."""
     seen = {}
-    real_closed, real_fills = fl._closed, fl._rejected_fills
+    real_closed, real_fills = assembly._closed, assembly._rejected_fills
 
     def closed(shells, result, where, blended, fuzzy):
         seen["blended"] = blended
@@ -1447,15 +1449,15 @@ def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
         seen["solid"], seen["fills"] = solid, fills
         return real_fills(solid, fills)
 
-    monkeypatch.setattr(fl, "_closed", closed)
-    monkeypatch.setattr(fl, "_rejected_fills", rejected_fills)
+    monkeypatch.setattr(assembly, "_closed", closed)
+    monkeypatch.setattr(assembly, "_rejected_fills", rejected_fills)
     box = shapes.box()
     corner = _corner_edges(box, V(0, 0, 10))
     solid, rep = C2Blend.fillet_report(box, corner, 2.0, label="Box")
     assert_corner_filled(rep, 3, 1)
     sewn, blended, (fill,) = seen["solid"], seen["blended"], seen["fills"]
     assert sorted(b.where for b in blended) == sorted("Box.%s" % e for e in corner)
-    assert fl._rejected_faces(sewn, blended, [fill]) == [] == fl._rejected_fills(sewn, [fill])
+    assert assembly._rejected_faces(sewn, blended, [fill]) == [] == assembly._rejected_fills(sewn, [fill])
 
     def rejecting(face):  # the solid's faces as a shell, face remade with its wire reversed
         bad = Part.Face(face.toNurbs().Faces[0].Surface, face.OuterWire.reversed())
@@ -1467,16 +1469,16 @@ def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
         return [(name, sorted(b.where for b in near)) for name, near in rejected]
 
     for b in blended:
-        shell = rejecting(fl._find_face(sewn, b))
-        assert where(fl._rejected_faces(shell, blended, [fill])) == \
+        shell = rejecting(assembly.blend_face(sewn, b))
+        assert where(assembly._rejected_faces(shell, blended, [fill])) == \
             [("the blend face of %s" % b.where, [b.where])]
-        assert fl._rejected_fills(shell, [fill]) == [fill]  # its end section bounds it
-    shell = rejecting(fl._patch_face(sewn, fill.patch))
+        assert assembly._rejected_fills(shell, [fill]) == [fill]  # its end section bounds it
+    shell = rejecting(assembly.patch_face(sewn, fill.patch))
     p = fill.patch.faces[0].CenterOfMass
-    assert where(fl._rejected_faces(shell, blended, [fill])) == \
+    assert where(assembly._rejected_faces(shell, blended, [fill])) == \
         [("the plate filling of the corner patch at (%.4g, %.4g, %.4g)" % (p.x, p.y, p.z),
           sorted("Box.%s" % e for e in corner))]
-    assert fl._rejected_fills(shell, [fill]) == [fill]
+    assert assembly._rejected_fills(shell, [fill]) == [fill]
     # the box's face x = 0 (cut along two of the blends' trimlines, apart from the
     # filling): the blends of the two corner edges lying in it
     (k,) = [k for k, f in enumerate(sewn.Faces) if f.Surface.__class__.__name__ == "Plane"
@@ -1485,9 +1487,9 @@ def test_faces_brepcheck_rejects_are_named_by_what_they_are(monkeypatch):
     in_side = sorted("Box.%s" % e for e in corner if box.getElement(e).BoundBox.XMax < 1e-9)
     assert len(in_side) == 2
     (k,) = [k for k, f in enumerate(shell.Faces) if f.BoundBox.XMax < 1e-9]
-    assert where(fl._rejected_faces(shell, blended, [fill])) == \
+    assert where(assembly._rejected_faces(shell, blended, [fill])) == \
         [("face Face%d of the filleted solid" % (k + 1), in_side)]
-    assert fl._rejected_fills(shell, [fill]) == []
+    assert assembly._rejected_fills(shell, [fill]) == []
 
 
 def test_blends_ending_off_the_corner_balls_are_kept_as_occts(monkeypatch):
@@ -1501,7 +1503,7 @@ def test_blends_ending_off_the_corner_balls_are_kept_as_occts(monkeypatch):
     fillet with either finding as its reason, and so are the corner patches where they
     meet. Those blends that are left, if any, are G2; their fillings are reported G0,
     and so is the fillet; with every fillet kept, it is G1 and OCCT's solid."""
-    monkeypatch.setattr(fl, "at_corner_balls", lambda chain, at_ends, radius: chain)
+    monkeypatch.setattr(solve, "at_corner_balls", lambda chain, at_ends, radius: chain)
     s, _ = shapes.spline_extrusion()
     edges = ["Edge%d" % i for i in range(5, 13)]  # the top's 4 edges, the 4 vertical
     assert sorted(round(s.getElement(e).BoundBox.ZMin) for e in edges if
@@ -1523,7 +1525,7 @@ def test_blends_ending_off_the_corner_balls_are_kept_as_occts(monkeypatch):
     assert all(r["verdict"] == "G2" for r in rep["trimlines"])
     assert len(rep["corner_patches"]) + sum(k.startswith("corner patch") for k in reasons) == 4
     for c in rep["corner_patches"]:
-        assert c["g0"] < 1e-3 and c["g1"] < fl.cn.MAX_SEAM and c["verdict"] == "G0", c
+        assert c["g0"] < 1e-3 and c["g1"] < cn.MAX_SEAM and c["verdict"] == "G0", c
     if blended:
         assert rep["verdict"] == "G0"
         assert rep["solid_check"] == "passes BRepCheck and the BOP check"
@@ -1549,7 +1551,7 @@ def test_blends_around_which_the_bop_check_finds_faults_are_kept_as_occts(monkey
             return "Error in Face: BOPAlgo SelfIntersect\n"
         return None
 
-    monkeypatch.setattr(fl.bc, "_checked", fake)
+    monkeypatch.setattr(bc, "_checked", fake)
     box = shapes.box()
     solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
     assert_valid(solid)
@@ -1709,8 +1711,8 @@ def _perturb_poles(monkeypatch):
                                          fit["uknots"], fit["vknots"], fit["uperiodic"],
                                          fit["vperiodic"], fit["udegree"], fit["vdegree"])
         return surface, fit
-    original = fl.fit_surface
-    monkeypatch.setattr(fl, "fit_surface", perturbed)
+    original = solve.fit_surface
+    monkeypatch.setattr(solve, "fit_surface", perturbed)
 
 
 def _extent(shape, tol=1e-3):
@@ -1860,13 +1862,13 @@ def test_a_hole_listed_out_of_order_is_filled(monkeypatch):
     the sewn shell lists them in its own order. The L bracket's four-sided hole, its
     edges given as 1, 3, 2, 4, is filled all the same (it was not: on a boss filleted
     all round, that failure kept every fillet as OCCT made it)."""
-    real, got = fl.cn.fill, []
+    real, got = cn.fill, []
 
     def spy(shell, edges, guide, *rest):
         got.append((shell, edges, guide))
         return real(shell, edges, guide, *rest)
 
-    monkeypatch.setattr(fl.cn, "fill", spy)
+    monkeypatch.setattr(cn, "fill", spy)
     s, _, _ = shapes.l_bracket()
     C2Blend.fillet_report(s, _corner_edges(s, V(5, 0, 5)), 1.0, label="Bracket")
     shell, edges, guide = got[0]
@@ -1874,7 +1876,7 @@ def test_a_hole_listed_out_of_order_is_filled(monkeypatch):
     shuffled = [edges[0], edges[2], edges[1], edges[3]]
     assert not any(v.isSame(w) for v in shuffled[0].Vertexes for w in shuffled[1].Vertexes)
     face, _ = real(shell, shuffled, guide)
-    assert face.isValid() and fl.cn._seam(face, shell, edges)[0] < 1e-4
+    assert face.isValid() and cn._seam(face, shell, edges)[0] < 1e-4
 
 
 def test_boss_into_wall_every_edge():
@@ -1897,16 +1899,16 @@ def test_boss_into_wall_every_edge():
 def unfinished_checks(monkeypatch):
     """The list to which each Unfinished that the BOP check (bopcheck.problems) raises
     from now on is appended."""
-    real, out = fl.bc.problems, []
+    real, out = bc.problems, []
 
     def problems(*args, **kwargs):
         try:
             return real(*args, **kwargs)
-        except fl.bc.Unfinished as ex:
+        except bc.Unfinished as ex:
             out.append(ex)
             raise
 
-    monkeypatch.setattr(fl.bc, "problems", problems)
+    monkeypatch.setattr(bc, "problems", problems)
     return out
 
 
@@ -1922,7 +1924,7 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
     the next trial, and the solid passes the real check. (The real loop uses a whole
     processor, and its processor time stops it: test_a_real_stuck_bop_check_is_found_
     alongside.)"""
-    real_fill, real_send = fl.cn.fill, fl.bc._Server.send
+    real_fill, real_send = cn.fill, bc._Server.send
     made = []
 
     def fill(*args):
@@ -1940,16 +1942,16 @@ def test_a_stuck_bop_check_is_stopped_and_the_corner_refilled(monkeypatch):
         if poisoned(shape):
             os.kill(server.proc.pid, signal.SIGSTOP)
 
-    monkeypatch.setattr(fl.cn, "fill", fill)
-    monkeypatch.setattr(fl.bc._Server, "send", send)
+    monkeypatch.setattr(cn, "fill", fill)
+    monkeypatch.setattr(bc._Server, "send", send)
     given_up = unfinished_checks(monkeypatch)
     # the real neighbourhood checks take up to 0.9 s of processor time, and up to 3 s
     # on the clock in CI (another shard beside it): only the injected one may be given
     # up, after 15 s on the clock
     near = 5.0
-    monkeypatch.setattr(fl.bc, "NEAR_LIMIT", near)
-    monkeypatch.setattr(fl.bc, "WALL_FACTOR", 3.0)
-    monkeypatch.setattr(fl.bc, "WATCH_AFTER", 1.0)
+    monkeypatch.setattr(bc, "NEAR_LIMIT", near)
+    monkeypatch.setattr(bc, "WALL_FACTOR", 3.0)
+    monkeypatch.setattr(bc, "WATCH_AFTER", 1.0)
     box = shapes.box()
     edges = ["Edge%d" % (i + 1) for i in range(12)]
     solid, rep = C2Blend.fillet_report(box, edges, 2.0, label="Box")
@@ -1973,9 +1975,9 @@ def test_a_check_held_up_by_a_busy_machine_is_not_given_up(monkeypatch):
     (here 3) times the limit on the clock, and the next check starts a new server."""
     s, edge = shapes.shaft_on_plate()
     solid, _ = C2Blend.fillet_report(s, [edge], 2.0, label="ShaftPlate")
-    assert fl.bc.problems(solid) is None  # a server that has imported FreeCAD
-    monkeypatch.setattr(fl.bc, "WALL_FACTOR", 3.0)
-    real_send, timers = fl.bc._Server.send, []
+    assert bc.problems(solid) is None  # a server that has imported FreeCAD
+    monkeypatch.setattr(bc, "WALL_FACTOR", 3.0)
+    real_send, timers = bc._Server.send, []
 
     def frozen(server, shape, seconds):
         real_send(server, shape)
@@ -1985,18 +1987,18 @@ def test_a_check_held_up_by_a_busy_machine_is_not_given_up(monkeypatch):
                                           (server.proc.pid, signal.SIGCONT)))
             timers[-1].start()
 
-    monkeypatch.setattr(fl.bc._Server, "send", lambda server, shape: frozen(server, shape, 4.0))
+    monkeypatch.setattr(bc._Server, "send", lambda server, shape: frozen(server, shape, 4.0))
     t0 = time.monotonic()
-    assert fl.bc.problems(solid, 2.0) is None
+    assert bc.problems(solid, 2.0) is None
     assert 4.0 <= time.monotonic() - t0 < 5.5
-    monkeypatch.setattr(fl.bc._Server, "send", lambda server, shape: frozen(server, shape, 0))
+    monkeypatch.setattr(bc._Server, "send", lambda server, shape: frozen(server, shape, 0))
     t0 = time.monotonic()
-    with pytest.raises(fl.bc.Unfinished, match=r"did not finish within 6 s \(with 0\.\d s of "
+    with pytest.raises(bc.Unfinished, match=r"did not finish within 6 s \(with 0\.\d s of "
                                                r"processor time\)"):
-        fl.bc.problems(solid, 2.0)
+        bc.problems(solid, 2.0)
     assert 6.0 <= time.monotonic() - t0 < 7.5
-    monkeypatch.setattr(fl.bc._Server, "send", real_send)
-    assert fl.bc.problems(solid, 2.0) is None
+    monkeypatch.setattr(bc._Server, "send", real_send)
+    assert bc.problems(solid, 2.0) is None
     for t in timers:
         t.join()
 
@@ -2037,12 +2039,12 @@ def test_an_input_whose_faces_are_c0(convert):
         mid = pl.multVec(mid)
     else:
         s = s.toNurbs().Solids[0]
-    assert "GeomAbs_C0" in fl.bc.problems(s)
+    assert "GeomAbs_C0" in bc.problems(s)
     edge = min(("Edge%d" % (i + 1) for i in range(len(s.Edges))),
                key=lambda n: s.getElement(n).distToShape(Part.Vertex(mid))[0])
     assert s.getElement(edge).distToShape(Part.Vertex(mid))[0] < 1e-6
     solid, rep = C2Blend.fillet_report(s, [edge], 2.0, label="Shaft")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     assert not rep["kept_occt_faces"]
     assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
@@ -2059,7 +2061,7 @@ def _plane_cut_findings(face, z):
     whole = Part.Face(face.Surface)
     cut = whole.common(Part.makeBox(b.XLength + 20, b.YLength + 20, b.ZMax - z + 10,
                                     V(b.XMin - 10, b.YMin - 10, z)))
-    return fl.bc.problems(cut.Faces[0]) or ""
+    return bc.problems(cut.Faces[0]) or ""
 
 
 def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
@@ -2076,13 +2078,13 @@ def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
     boundary BRepCheck accepts, is reported and not taken for the fillet's fault: the
     fillet is G2 that way too."""
     s, edge = shapes.nurbs_sphere_through_plate(45.0)
-    orig = fl.bc.problems(s)
-    assert orig and fl._only_c0(orig)
+    orig = bc.problems(s)
+    assert orig and assembly._only_c0(orig)
     ball = next(f for f in s.Faces if isinstance(f.Surface, Part.BSplineSurface))
     assert "SelfIntersect" in _plane_cut_findings(ball, 5.5)
     assert "SelfIntersect" not in _plane_cut_findings(ball, 5.2)
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Ball")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     # whether the self-interference test fires here too depends on the blend's last bits
     # (it did after a change of the samples' placement by 1e-12)
@@ -2091,11 +2093,11 @@ def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
         r"input solid \(%s\)(; its self-interference test also reports Error in Face: BOPAlgo "
         r"SelfIntersect on face Face\d+, only C0 .*)?: Boolean operations on those faces may "
         r"fail" % (re.escape(orig), re.escape(orig)), rep["solid_check"]), rep["solid_check"]
-    half = fl._restarted
-    monkeypatch.setattr(fl, "_restarted", lambda e, face=None, tol=0.0:
+    half = recut._restarted
+    monkeypatch.setattr(recut, "_restarted", lambda e, face=None, tol=0.0:
                         e if face is not None else half(e))
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Ball")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
     line = rep["solid_check"]
@@ -2106,7 +2108,7 @@ def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
     assert m, line
     face = solid.Faces[int(m.group(1)) - 1]
     assert isinstance(face.Surface, Part.BSplineSurface) and face.isValid()
-    assert "SelfIntersect" in fl.bc.problems(face)
+    assert "SelfIntersect" in bc.problems(face)
     # the piece of the sphere above the blend: its trimline runs on the sphere r = 5
     # about (0, 0, 7), at z above the plate's top z = 5
     assert all(abs((v.Point - V(0, 0, 7)).Length - 5) < 1e-6 and v.Point.z > 5
@@ -2128,7 +2130,7 @@ def test_an_input_whose_c0_face_gets_self_interference_is_filleted(axis):
     touches the sphere, its centre 5 + R from the sphere's."""
     s, edges = shapes.nurbs_sphere_on_its_side(axis)
     assert len(edges) == (2 if axis == "y" else 1)
-    orig = fl.bc.problems(s)
+    orig = bc.problems(s)
     assert "SelfIntersect" in orig
     assert ("InvalidCurveOnSurface" in orig) == (axis == "x")
     ball = next(f for f in s.Faces if isinstance(f.Surface, Part.BSplineSurface)
@@ -2138,7 +2140,7 @@ def test_an_input_whose_c0_face_gets_self_interference_is_filleted(axis):
     mesh = sf.mesh_area(ball, 2e-4 * ball.BoundBox.DiagonalLength)
     assert abs(mesh / cap - 1) < 5e-4
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Ball")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]  # one closed chain
     assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
@@ -2172,9 +2174,9 @@ def test_pieces_of_a_c0_face_are_measured_on_triangulations():
     plane = Part.makePlane(20, 20, V(-10, -10, 8))
     pieces = cap.generalFuse([plane.section(cap)], 1e-7)[0].Faces
     assert len(pieces) == 2
-    assert fl._amiss(cap, pieces) is None
+    assert recut._amiss(cap, pieces) is None
     top = min(pieces, key=lambda f: f.distToShape(Part.Vertex(V(0, 0, 12)))[0])
-    missing = fl._amiss(cap, [f for f in pieces if f is not top])
+    missing = recut._amiss(cap, [f for f in pieces if f is not top])
     m = re.match(r"OCCT's general fuse lost part of the face \(([0-9.]+) of ([0-9.]+)\)",
                  missing)
     assert m, missing
@@ -2198,7 +2200,7 @@ def test_a_part_ellipsoid_on_a_plate_is_g2(radius):
     assert "SelfIntersect" in _plane_cut_findings(ell, 0.0)
     assert "SelfIntersect" not in _plane_cut_findings(ell, 0.5)
     solid, rep = C2Blend.fillet_report(s, [edge], radius, label="Ellipsoid")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
     assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
@@ -2222,7 +2224,7 @@ def test_a_scaled_torus_on_a_plate_is_g2(scale, z, turn, r):
     the surface's periodic range, and OCCT's general fuse, cutting it along the two
     trimlines, kept only the piece inside that range: OCCT's faces were kept. Rebased,
     the face is cut in three. Scaled 1.5 x 1.2 x 1 and turned, the outer trimline
-    cuts it only when started where it crosses the face's seam (fl._restarted), which
+    cuts it only when started where it crosses the face's seam (recut._restarted), which
     lies 1.2e-4 from the blend's vertex: started half a period on, the pieces' edges
     met at the seam and the sewing left them free. The result is G2 and valid, and
     its trimlines on the plate are where a ball of radius R rolling on the plate
@@ -2230,7 +2232,7 @@ def test_a_scaled_torus_on_a_plate_is_g2(scale, z, turn, r):
     s, rims = shapes.scaled_torus_on_plate(scale, z, turn)
     assert len(rims) == 2
     solid, rep = C2Blend.fillet_report(s, rims, r, label="Torus")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None  # BRepCheck
+    assert solid.isValid() and bc.problems(solid, bop=False) is None  # BRepCheck
     assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
                                          "that is only C0 (")
     assert_g2(rep)
@@ -2257,8 +2259,8 @@ def test_a_face_across_its_surfaces_periodic_range_is_cut_rebased():
     face = next(f for f in s.Faces if isinstance(f.Surface, Part.BSplineSurface))
     tools = [e for z in (0.42, 0.6)
              for e in face.section(Part.makePlane(60, 60, V(-30, -30, z))).Edges]
-    assert "lost part of the face" in fl._fused(face, tools, 1e-6)
-    moved = fl._rebased(face)
+    assert "lost part of the face" in recut._fused(face, tools, 1e-6)
+    moved = recut._rebased(face)
     u0, u1, v0, v1 = moved.Surface.bounds()
     lo_u, hi_u, lo_v, hi_v = moved.ParameterRange
     assert u0 <= lo_u and hi_u <= u1 and v0 <= lo_v and hi_v <= v1
@@ -2266,7 +2268,7 @@ def test_a_face_across_its_surfaces_periodic_range_is_cut_rebased():
                 and face.ParameterRange[3] <= face.Surface.bounds()[3])
     for u, v in ((0.3, 6.0), (2.0, 7.5), (5.0, 9.8)):
         assert (moved.Surface.value(u, v) - face.Surface.value(u, v)).Length < 1e-12
-    pieces = fl._fused(moved, tools, 1e-6)
+    pieces = recut._fused(moved, tools, 1e-6)
     assert len(pieces) == 5
     for p in pieces:  # each bounded within one band
         zs = sorted(q.z for e in p.Edges for q in e.discretize(20))
@@ -2275,9 +2277,9 @@ def test_a_face_across_its_surfaces_periodic_range_is_cut_rebased():
     d = 2e-4 * face.BoundBox.DiagonalLength
     assert sum(sf.mesh_area(p, d) for p in pieces) == pytest.approx(
         sf.mesh_area(face, d), rel=1e-4)
-    assert fl._rebased(moved) is moved
+    assert recut._rebased(moved) is moved
     box = Part.makeBox(1, 1, 1).Faces[0]
-    assert fl._rebased(box) is box
+    assert recut._rebased(box) is box
 
 
 def test_a_closed_tool_the_cut_does_not_follow_is_refused():
@@ -2288,15 +2290,15 @@ def test_a_closed_tool_the_cut_does_not_follow_is_refused():
     sq = Part.makeBox(10, 10, 1).Faces[4]  # z = 0
     assert sq.BoundBox.ZMax < 1e-12
     circle = Part.makeCircle(2, V(5, 5, 0))
-    pieces = fl._fused(sq, [circle], 1e-7)
+    pieces = recut._fused(sq, [circle], 1e-7)
     assert sorted(p.Area for p in pieces) == pytest.approx([4 * math.pi,
                                                             100 - 4 * math.pi])
     lifted = Part.makeCircle(2, V(5, 5, 1e-3))
-    assert fl._fused(sq, [circle, lifted], 1e-7) == (
+    assert recut._fused(sq, [circle, lifted], 1e-7) == (
         "OCCT's general fuse did not cut the face along the 2nd of the 2 trimline edges "
         "on it")
-    assert len(fl._fused(sq, [Part.makeLine(V(2, 2, 0), V(4, 3, 0))], 1e-7)) == 1
-    assert [fl._ordinal(n) for n in (1, 2, 3, 4, 11, 12, 13, 21, 22, 102, 111)] == [
+    assert len(recut._fused(sq, [Part.makeLine(V(2, 2, 0), V(4, 3, 0))], 1e-7)) == 1
+    assert [recut._ordinal(n) for n in (1, 2, 3, 4, 11, 12, 13, 21, 22, 102, 111)] == [
         "1st", "2nd", "3rd", "4th", "11th", "12th", "13th", "21st", "22nd", "102nd", "111th"]
 
 
@@ -2306,13 +2308,13 @@ def test_unreliable_findings_count_only_as_often_as_the_faces_have_them():
     box = Part.makeBox(1, 1, 1)
     orig = "Error in Face: BOPAlgo GeomAbs_C0"
     two = "Error in Face: BOPAlgo SelfIntersect (2); Error in Face: BOPAlgo GeomAbs_C0"
-    assert fl._inherited(two, orig, box, [(box.Faces[0], 1)]) is None
+    assert assembly._inherited(two, orig, box, [(box.Faces[0], 1)]) is None
     assert "also reports Error in Face: BOPAlgo SelfIntersect (2) on face Face1" in \
-        fl._inherited(two, orig, box, [(box.Faces[0], 2)])
+        assembly._inherited(two, orig, box, [(box.Faces[0], 2)])
     small = "Error in Edge: BOPAlgo TooSmallEdge; Error in Face: BOPAlgo GeomAbs_C0"
-    assert fl._inherited(small, orig, box, [(box.Faces[0], 1)]) is None
-    assert fl._inherited(two, None, box, [(box.Faces[0], 2)]) is None
-    assert fl._inherited(orig, orig, box) == (
+    assert assembly._inherited(small, orig, box, [(box.Faces[0], 1)]) is None
+    assert assembly._inherited(two, None, box, [(box.Faces[0], 2)]) is None
+    assert assembly._inherited(orig, orig, box) == (
         "passes BRepCheck; the BOP check finds geometry that is only C0 (%s), as in the "
         "input solid (%s): Boolean operations on those faces may fail" % (orig, orig))
 
@@ -2329,7 +2331,7 @@ def test_runs_end_where_the_contact_crosses_the_face_change():
     ns, edges = shapes.as_nurbs(s, names)
     solid, rep = C2Blend.fillet_report(ns, edges, 1.0, label="Slot")
     # BRepCheck passes; the BOP check's C0 findings are the input's (see the test above)
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert "as in the input solid" in rep["solid_check"]
     assert_g2(rep)
     assert len(rep["blends"]) == 4 and not rep["kept_occt_faces"]
@@ -2366,7 +2368,7 @@ def test_concave_edge_ending_on_bspline_faces(part):
         s, _, inner = shapes.l_bracket()
     ns, edges = shapes.as_nurbs(s, [inner])
     solid, rep = C2Blend.fillet_report(ns, edges, 2.0, label="Part")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert rep["solid_check"] == "passes BRepCheck and the BOP check" or \
         "as in the input solid" in rep["solid_check"]
     assert_g2(rep)
@@ -2388,7 +2390,7 @@ def test_a_preview_skips_the_bop_check(monkeypatch):
     def no_bop(*args):
         raise AssertionError("the BOP check ran")
 
-    monkeypatch.setattr(fl.bc, "_checked", no_bop)
+    monkeypatch.setattr(bc, "_checked", no_bop)
     solid, rep = fl.fillet(s, [edge], 2.0, label="ShaftPlate", bop=False)
     assert rep["solid_check"] == "passes BRepCheck; BOP check skipped (preview)"
     assert_valid(solid)
@@ -2403,9 +2405,9 @@ def test_the_continuity_is_measured_while_the_bop_check_runs(monkeypatch):
     s, edge = shapes.shaft_on_plate()
     order = []  # on the whole solid's server (OCCT's fillet is tried first on another)
     for name in ("send", "receive"):
-        real = getattr(fl.bc._Server, name)
-        monkeypatch.setattr(fl.bc._Server, name, lambda self, *a, real=real, name=name: (
-            self is not fl.bc._servers.get("trial") and order.append(name), real(self, *a))[1])
+        real = getattr(bc._Server, name)
+        monkeypatch.setattr(bc._Server, name, lambda self, *a, real=real, name=name: (
+            self is not bc._servers.get("trial") and order.append(name), real(self, *a))[1])
     real_measure = fl._measure
     monkeypatch.setattr(fl, "_measure", lambda *a: (order.append("measure"),
                                                     real_measure(*a))[1])
@@ -2416,7 +2418,7 @@ def test_the_continuity_is_measured_while_the_bop_check_runs(monkeypatch):
     st = rep["stage_seconds"]
     assert 0 < st["continuity_check"] and 0 < st["sew_and_brepcheck"]
     assert sum(st.values()) <= rep["seconds"]  # overlapped time is counted once
-    monkeypatch.setattr(fl.bc, "_checked", lambda shape, seconds, meanwhile=None: None)
+    monkeypatch.setattr(bc, "_checked", lambda shape, seconds, meanwhile=None: None)
     again, later = fl.fillet(s, [edge], 2.0, label="ShaftPlate")
     for key in ("trimlines", "mitres", "junctions", "corner_patches"):
         assert later[key] == rep[key]
@@ -2432,9 +2434,9 @@ def test_work_that_fails_during_a_bop_check_leaves_no_answer_behind():
         raise ValueError("the caller's own failure")
 
     with pytest.raises(ValueError, match="the caller's own failure"):
-        fl.bc.problems(bad, meanwhile=fails)
-    assert fl.bc.problems(shapes.box()) is None
-    assert "SelfIntersect" in fl.bc.problems(bad, meanwhile=lambda: None)
+        bc.problems(bad, meanwhile=fails)
+    assert bc.problems(shapes.box()) is None
+    assert "SelfIntersect" in bc.problems(bad, meanwhile=lambda: None)
 
 
 def test_an_unfinished_bop_check_is_reported(monkeypatch):
@@ -2442,10 +2444,10 @@ def test_an_unfinished_bop_check_is_reported(monkeypatch):
     (valid by BRepCheck) is returned, and the report says that the BOP check did not
     finish, so Boolean operations on it may not finish either."""
     def unfinished(shape, seconds, meanwhile=None):
-        raise fl.bc.Unfinished("OCCT's BOP check did not finish within %.0f s of processor "
+        raise bc.Unfinished("OCCT's BOP check did not finish within %.0f s of processor "
                                "time" % seconds)
 
-    monkeypatch.setattr(fl.bc, "_checked", unfinished)
+    monkeypatch.setattr(bc, "_checked", unfinished)
     box = shapes.box()
     solid, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, label="Box")
     assert_valid(solid)
@@ -2453,13 +2455,13 @@ def test_an_unfinished_bop_check_is_reported(monkeypatch):
     assert rep["solid_check"] == (
         "passes BRepCheck, but OCCT's BOP check did not finish within %.0f s of processor "
         "time (it loops on faces tangent along an edge, or is slow on this solid): Boolean "
-        "operations on this solid may not finish either" % fl.bc.LIMIT)
+        "operations on this solid may not finish either" % bc.LIMIT)
     s, names = shapes.ruled_rounded_loft()
     solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Loft")
     assert not rep["blends"]
     assert rep["solid_check"] == ("OCCT's rolling-ball solid, unchanged: it passes "
                                   "isValid(), but OCCT's BOP check did not finish within "
-                                  "%.0f s of processor time" % fl.bc.LIMIT)
+                                  "%.0f s of processor time" % bc.LIMIT)
 
 
 def test_a_slow_bop_check_is_not_called_a_loop(monkeypatch):
@@ -2471,7 +2473,7 @@ def test_a_slow_bop_check_is_not_called_a_loop(monkeypatch):
     second or two. Before, the report said that the check loops on faces tangent along
     an edge, as it did on a prism with 15 edges at R = 1.954 whose check passed in 53 s
     (tools/fillet_survey.py --random-edges 40 --seed 19 --turned, part 36)."""
-    monkeypatch.setattr(fl.bc, "LIMIT", 1.0)
+    monkeypatch.setattr(bc, "LIMIT", 1.0)
     given_up = unfinished_checks(monkeypatch)
     box = Part.makeBox(10, 10, 10)
     solid, rep = C2Blend.fillet_report(box, ["Edge%d" % (i + 1) for i in range(12)], 2.0,
@@ -2494,15 +2496,15 @@ def test_a_kept_fillet_at_a_corner_is_joined_by_the_filling(monkeypatch):
     fillet on the parts of the corner survey."""
     box = shapes.box()
     corner = _corner_edges(box, V(0, 0, 10))
-    real, calls = fl.solve_chain, []
+    real, calls = solve.solve_chain, []
 
     def first_fails(chain, *args, **kw):
         calls.append(chain)
         if len(calls) == 1:
-            raise fl.NotReplaced("kept by this test")
+            raise solve.NotReplaced("kept by this test")
         return real(chain, *args, **kw)
 
-    monkeypatch.setattr(fl, "solve_chain", first_fails)
+    monkeypatch.setattr(solve, "solve_chain", first_fails)
     solid, rep = C2Blend.fillet_report(box, corner, 2.0, label="Box")
     assert_valid(solid)
     assert len(calls) == 3 and len(rep["blends"]) == 2
@@ -3138,15 +3140,15 @@ def test_chain_whose_side_changes_face_is_kept_whole(monkeypatch):
     kept for the whole chain, not only for that run: the other runs' blends end at
     junctions that only that run's blend meets. One reason is reported, the solid is
     OCCT's and valid, and the verdict G1."""
-    real, calls = fl.assemble, []
+    real, calls = assembly.assemble, []
 
     def failing(shape, result, blended, *args):
         calls.append(len(blended))
         if len(calls) == 1:
-            raise fl.Unassembled([blended[1]], "injected")
+            raise assembly.Unassembled([blended[1]], "injected")
         return real(shape, result, blended, *args)
 
-    monkeypatch.setattr(fl, "assemble", failing)
+    monkeypatch.setattr(assembly, "assemble", failing)
     s, names = shapes.rounded_box()
     solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Rounded")
     assert calls == [8]  # no second assembly: nothing is left to replace
@@ -3332,7 +3334,7 @@ def test_arc_length_near_clustered_guide_knots():
         assert abs(sum(steps)) == pytest.approx(math.pi / 2, abs=1e-9)
     assert arcs == 4
     solid, rep = C2Blend.fillet_report(s, names, 1.0, label="Pocket")
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     assert len(rep["blends"]) == 8 and not rep["kept_occt_faces"]
 
@@ -3374,7 +3376,7 @@ def test_boss_on_a_seam_is_g2():
     junction's vertex on it. OCCT's general fuse lost all but 8.5 of the face's
     1235 mm2 when it was cut along the blend's closed trimline, whose vertex lies there,
     so the fillet was kept as OCCT's. The cut is now made again with the trimline
-    started half a period on (fl._restarted): the fillet is G2, the solid passes the BOP
+    started half a period on (recut._restarted): the fillet is G2, the solid passes the BOP
     check, and its trimline on the boss lies on the boss's cylinder (3 from its axis,
     the x axis at z = 10, within 1e-6). The same boss 45 degrees off the seam, and the
     first cut's failure as such (the retry disabled), are checked too."""
@@ -3398,14 +3400,14 @@ def test_rim_of_an_offset_loft_is_g2():
     """The bottom rim of a lofted solid offset by 0.5 (an OffsetSurface face): cutting
     that face along the blend's closed trimline, whose vertex lies on the face's seam,
     raised "MultiFusion failed", and OCCT's face was kept. Started half a period on
-    (fl._restarted), the trimline cuts it: G2, BRepCheck-valid, and the trimline on the
+    (recut._restarted), the trimline cuts it: G2, BRepCheck-valid, and the trimline on the
     offset face lies 0.5 from the original loft's face (to 1e-6). The offset face is
     only C0 for OCCT's BOP check, in the input already, and the report says so."""
     s, side, edge = shapes.offset_loft()
     assert any(isinstance(f.Surface, Part.OffsetSurface) for f in s.Faces)
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Offset")
     assert not rep["kept_occt_faces"]
-    assert solid.isValid() and fl.bc.problems(solid, bop=False) is None
+    assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert_g2(rep)
     assert rep["solid_check"].startswith("passes BRepCheck; the BOP check finds geometry "
                                          "that is only C0 (")
@@ -3456,7 +3458,7 @@ def test_a_rim_crossing_its_faces_seam_at_a_junction_is_g2():
     periodic B-spline, is cut into 12 pointwise blends at its knot lines, one of which
     is its seam. The trimline's loop on the side face then has a vertex 1.1e-9 before
     the seam, and cutting the face along it raised "MultiFusion failed": OCCT's face was
-    kept. With the loop's ends snapped onto the seam (fl._snapped_to_seams), the cut is
+    kept. With the loop's ends snapped onto the seam (recut._snapped_to_seams), the cut is
     made: G2, valid, passing the BOP check. The side face is vertical, so what is left
     of it is its outline's perimeter (its area / 8) times the contact's height, 8 - R,
     and ends there."""
@@ -3511,8 +3513,8 @@ def test_a_loop_just_before_a_seam_cuts_once_snapped():
                                                                      V(0, 0, 1)))[1]
     iso, m = face.Surface.vIso(v), 0.5 * (u0 + u1)
     loop = [iso.toShape(u0 - 1e-9, m), iso.toShape(m, u1 - 1e-9)]
-    assert isinstance(fl._fused(face, loop, 1e-7), str)
-    pieces = fl._fused(face, fl._snapped_to_seams(loop, face, 1e-7), 1e-7)
+    assert isinstance(recut._fused(face, loop, 1e-7), str)
+    pieces = recut._fused(face, recut._snapped_to_seams(loop, face, 1e-7), 1e-7)
     assert sorted(f.Area for f in pieces) == pytest.approx(
         [face.Area / 16.0, face.Area * 15.0 / 16.0], rel=1e-9)
 
@@ -3551,7 +3553,7 @@ def test_an_occt_failure_while_assembling_keeps_occts_solid(monkeypatch):
     fillets, each with the message as its reason, and the solid is OCCT's."""
     def failing(faces):
         raise Part.OCCError("BRep_API: command not done")
-    monkeypatch.setattr(fl, "_sewn", failing)
+    monkeypatch.setattr(assembly, "_sewn", failing)
     box = Part.makeBox(10, 10, 10)
     solid, rep = C2Blend.fillet_report(box, ["Edge1", "Edge3"], 2.0, label="Box")
     assert_valid(solid)
@@ -3650,7 +3652,7 @@ def test_distance_to_a_face_winding_round_its_seam():
 def test_a_cut_whose_pieces_overlap_says_so():
     """OCCT's general fuse cuts the 3-turn helical ridge's cylinder face (its domain
     spans 3.6 periods) along a helix midway between the ridge's turns into pieces
-    whose areas add up to more than the face's; fl._fused refuses them and says why:
+    whose areas add up to more than the face's; recut._fused refuses them and says why:
     the face spans 3.6 periods of its surface (22.6 / 2 pi)."""
     s, _ = shapes.helical_ridge()
     face = next(f for f in s.Faces if isinstance(f.Surface, Part.Cylinder))
@@ -3662,7 +3664,7 @@ def test_a_cut_whose_pieces_overlap_says_so():
                      r"([0-9.]+), more than its ([0-9.]+): the face spans ([0-9.]+) periods "
                      r"of its surface, winding round it \(as between the turns of a helical "
                      r"ridge\), and OCCT's general fuse cut it wrongly",
-                     fl._fused(face, helix.Edges, 1e-7))
+                     recut._fused(face, helix.Edges, 1e-7))
     assert m and float(m.group(1)) > 1.1 * float(m.group(2)) and \
         float(m.group(2)) == pytest.approx(face.Area, rel=1e-5)
     assert m.group(3) == "3.6"
@@ -3755,7 +3757,7 @@ def test_the_junction_of_a_helical_ridge_is_g2(turns, check):
     periods, and is cut into strips (strips.py; OCCT's own cut put the junction's
     edges on it, by OCCT's distance, and dropped it at 2 turns; at 3 it cut the face
     wrongly). At 2.5 turns the ridge's tube, rebased, was cut into a piece that is not
-    valid and was dropped (fl._cut_face now tries the next cut, the face as it is).
+    valid and was dropped (recut.cut_face now tries the next cut, the face as it is).
     Every trimline is G2, nothing is kept as OCCT's, the solid is valid and
     the BOP check finds nothing (1.5 turns) or only the C0 geometry of the input's
     ridge. The strips are merged again: one cylindrical face, between the fillets'
@@ -3764,7 +3766,7 @@ def test_the_junction_of_a_helical_ridge_is_g2(turns, check):
     sqrt(1.1^2 - 0.3^2) = 1.058 from the tube's centre, across the meridian plane).
     At 1.5 and 3 turns the top and bottom faces meet themselves at a cusp where a
     fillet's end section touches the ridge's outline: BRepCheck rejected them until
-    fl._tolerate_cusps raised the tolerance of those vertices to the least that passes
+    assembly._tolerate_cusps raised the tolerance of those vertices to the least that passes
     (2.5e-3 at 1.5, 2.5 and 3 turns; 0.9 times that, BRepCheck rejects the face again;
     the report gives the solid's largest tolerances beside OCCT's); the input's own
     tolerances are left as they were."""
@@ -3799,14 +3801,14 @@ def test_the_junction_of_a_helical_ridge_is_g2(turns, check):
 
 def test_faces_meeting_themselves_at_a_cusp_are_rejected_unless_its_tolerance_grows(
         monkeypatch):
-    """The ridge of 1.5 turns at R = 0.3 with fl._tolerate_cusps allowed no growth
+    """The ridge of 1.5 turns at R = 0.3 with assembly._tolerate_cusps allowed no growth
     (CUSP_REACH 0): BRepCheck rejects the cylinder's top and bottom faces, each grown
     at a fillet's end to a cusp where the end section touches the ridge's outline, and
     both fillets are kept as OCCT's. The reason names the faces of the filleted solid
     (not returned) and the input's faces they lie on: the planes z = 0 and z = 6. With
     the growth allowed, the same junction is G2 (test_the_junction_of_a_helical_ridge_
     is_g2)."""
-    monkeypatch.setattr(fl, "CUSP_REACH", 0.0)
+    monkeypatch.setattr(assembly, "CUSP_REACH", 0.0)
     s, edges = shapes.helical_ridge(1.5)
     solid, rep = C2Blend.fillet_report(s, edges, 0.3)
     assert_valid(solid)
@@ -3824,7 +3826,7 @@ def test_faces_meeting_themselves_at_a_cusp_are_rejected_unless_its_tolerance_gr
 
 
 def test_cusps_are_found_where_a_face_s_edges_leave_a_vertex_the_same_way():
-    """fl._cusps on the spandrel a concave fillet R = 2 leaves in a square corner: the
+    """assembly._cusps on the spandrel a concave fillet R = 2 leaves in a square corner: the
     quarter circle centred at (2, 2) is tangent to the legs along x and y at (2, 0) and
     (0, 2), where it leaves the vertex in the leg's direction (cusps; their tolerance
     may grow to CUSP_REACH times the leg, the shorter edge, 2); the corner at the
@@ -3835,11 +3837,11 @@ def test_cusps_are_found_where_a_face_s_edges_leave_a_vertex_the_same_way():
                                     .toShape(),
                                     Part.LineSegment(V(0, 2, 0), V(0, 0, 0)).toShape()]))
     assert spandrel.isValid() and spandrel.Area == pytest.approx(4 - math.pi, rel=1e-12)
-    cusps = fl._cusps(spandrel)
+    cusps = assembly._cusps(spandrel)
     assert sorted((round(v.Point.x, 12), round(v.Point.y, 12)) for v, _ in cusps) == \
         [(0.0, 2.0), (2.0, 0.0)]
-    assert all(cap == pytest.approx(fl.CUSP_REACH * 2.0) for _, cap in cusps)
-    assert fl._cusps(Part.makePlane(2, 2)) == []
+    assert all(cap == pytest.approx(assembly.CUSP_REACH * 2.0) for _, cap in cusps)
+    assert assembly._cusps(Part.makePlane(2, 2)) == []
 
 
 @pytest.mark.parametrize("surface, bounds, expected", [
@@ -3866,10 +3868,10 @@ def test_a_cut_along_a_c0_knot_line_says_so(dv):
     20 degrees, on a plate (the part whose fillet at R = 0.5 keeps OCCT's faces), rebased:
     a rational B-spline of degree 2 in v with knots of multiplicity 2, so only C0 along
     them, one at v = 2 pi. Cut along the iso-line v = 2 pi + dv, OCCT's general fuse
-    loses the face beyond it when dv is within 1e-3, and fl._fused says the cut runs
+    loses the face beyond it when dv is within 1e-3, and recut._fused says the cut runs
     along that knot line; 0.1 from it, the face is cut in two pieces that make it up."""
     s, _ = shapes.scaled_torus_on_plate((1.5, 1.2, 1.0), 0.5, 20.0)
-    face = fl._rebased(next(f for f in s.Faces
+    face = recut._rebased(next(f for f in s.Faces
                             if isinstance(f.Surface, Part.BSplineSurface)))
     surface = face.Surface
     knot = surface.getVKnots().index(pytest.approx(2 * math.pi, abs=1e-12))
@@ -3877,7 +3879,7 @@ def test_a_cut_along_a_c0_knot_line_says_so(dv):
     v = 2 * math.pi + dv
     iso = Part.Geom2d.Line2dSegment(FreeCAD.Base.Vector2d(0, v),
                                     FreeCAD.Base.Vector2d(2 * math.pi, v)).toShape(surface)
-    got = fl._fused(face, [iso], 5.7e-6)
+    got = recut._fused(face, [iso], 5.7e-6)
     if dv < 0.01:
         m = re.fullmatch(r"OCCT's general fuse lost part of the face \(([0-9.]+) of "
                          r"([0-9.]+)\), cutting along a knot line where its B-spline "
@@ -3889,7 +3891,7 @@ def test_a_cut_along_a_c0_knot_line_says_so(dv):
     else:
         assert not isinstance(got, str), got
         assert len(got) == 2
-        # OCCT's areas on this C0 surface agree to 1.3e-4 (fl._amiss allows 1e-3)
+        # OCCT's areas on this C0 surface agree to 1.3e-4 (recut._amiss allows 1e-3)
         assert sum(f.Area for f in got) == pytest.approx(face.Area, rel=1e-3)
 
 
@@ -3916,10 +3918,10 @@ def test_a_one_turn_helical_ridge_is_g2():
 
 
 def test_a_cut_lost_at_a_seam_keeps_occts_face(monkeypatch):
-    """Without the restarted trimline (fl._restarted returning the edge as it is), the
+    """Without the restarted trimline (recut._restarted returning the edge as it is), the
     boss on the seam is kept as OCCT's, the reason names the lost area, and the solid
     is valid."""
-    monkeypatch.setattr(fl, "_restarted", lambda edge, face=None, tol=0.0: edge)
+    monkeypatch.setattr(recut, "_restarted", lambda edge, face=None, tol=0.0: edge)
     s, edges = shapes.loft_with_boss(0.0)
     solid, rep = C2Blend.fillet_report(s, edges, 1.0, label="Loft")
     assert_valid(solid)
@@ -3935,7 +3937,7 @@ def test_a_pocket_floor_edge_running_into_a_through_hole_is_g2(monkeypatch):
     That face's wire runs along the cylinder's seam twice, which wire.Edges lists once:
     rebuilt from those, the wire did not close, and the fillet was kept as OCCT's
     (the old rebuild, patched in, still does so). Rebuilt in the wire's own order
-    (fl._rewired), the fillet is G2 at R = 0.5, 1 and 1.5, the solid passes the BOP
+    (recut._rewired), the fillet is G2 at R = 0.5, 1 and 1.5, the solid passes the BOP
     check, the hole's face keeps the seam (the line x = 33, y = 22 from z = 0 to 9),
     and the material the fillet adds lies between 0 and the R x R square prism along
     the edge (5.76 long)."""
@@ -3962,7 +3964,7 @@ def test_a_pocket_floor_edge_running_into_a_through_hole_is_g2(monkeypatch):
         edges = [e for e in wire.Edges if not any(e.isSame(x) for x in drop)] + new
         out = Part.Wire(Part.__sortEdges__(edges))
         return out if out.isClosed() else None
-    monkeypatch.setattr(fl, "_rewired", sorted_again)
+    monkeypatch.setattr(recut, "_rewired", sorted_again)
     solid, rep = C2Blend.fillet_report(s, [name], 1.0, label="Block")
     assert not rep["blends"] and rep["verdict"] == "G1"
     assert "does not close again once grown" in rep["kept_occt_faces"][0]["reason"]
@@ -3977,7 +3979,7 @@ def test_a_convex_edge_ending_where_a_side_hole_opens_a_wall_is_g2():
     OCCT's Boolean made, which ends at the floor. No leg could follow it, so the fillet
     was kept as OCCT's ("an end of its blend leaves face Face8 of the original solid
     away from the face's corners"; the same kept 2 of 200 random machined blocks). The
-    leg now runs along the intersection of the two cylinders (fl._leg_along); the
+    leg now runs along the intersection of the two cylinders (recut._leg_along); the
     wall's rebuilt wire gave no valid face there, and the wall and region are unified
     instead. At R = 0.2, 0.5 and 0.8, one edge and both, each fillet is G2, the solid
     passes the BOP check, the wall's edges below the floor lie on the wall, one per
@@ -4037,7 +4039,7 @@ def test_where_a_hole_cuts_a_pocket_s_wall_its_rim_and_the_floor_s_edges_are_set
     assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
     corners = rep["corner_patches"]
-    assert len(corners) == 2 and all(c["crease"]["edges"] == 1 and c["g1"] < fl.cn.MAX_SEAM
+    assert len(corners) == 2 and all(c["crease"]["edges"] == 1 and c["g1"] < cn.MAX_SEAM
                                      for c in corners)
     reach = min(radius, 0.5 * (3 - math.sqrt(6.0)))
     for d in (-1, 1):
@@ -4047,7 +4049,7 @@ def test_where_a_hole_cuts_a_pocket_s_wall_its_rim_and_the_floor_s_edges_are_set
 
     def fails(*args):
         raise ValueError("injected")
-    monkeypatch.setattr(fl.sb, "Setback", fails)
+    monkeypatch.setattr(sb, "Setback", fails)
     _, rep = C2Blend.fillet_report(s, names, radius)
     kept = rep["kept_occt_faces"]
     assert {w for k in kept for w in k["where"].split(", ") if w.startswith("Shape.Edge")} \
@@ -4148,7 +4150,7 @@ def test_occt_s_face_grown_past_the_original_is_replaced_by_its_cut():
     that decided whether OCCT's wall face is a piece of the original wall (to be
     replaced by the wall's pieces cut anew) lay in that growth, off the original wall,
     so both went into the sewing, which left 33 free edges, and every fillet was kept
-    as OCCT's. Now each point of a 3 x 3 grid inside it is tried (fillet._piece_of):
+    as OCCT's. Now each point of a 3 x 3 grid inside it is tried (recut.piece_of):
     nothing is kept, every trimline is G2, the 9 corners are filled, and one face lies
     on the wall. Its area is the rectangle between the trimlines at R from the
     filleted edges, (b - R)(c - R) (closed form), plus the growth under the fillet's
@@ -4360,8 +4362,8 @@ def test_an_edge_two_fillets_shorten_from_both_ends_keeps_its_piece(monkeypatch)
 
     def middle_and_ends(edge, kept, tol):
         return all(kept.distToShape(Part.Vertex(p))[0] > tol
-                   for p in fl._edge_points(edge, (0.5, 1e-3, 1.0 - 1e-3)))
-    monkeypatch.setattr(fl, "_consumed", middle_and_ends)
+                   for p in recut.edge_points(edge, (0.5, 1e-3, 1.0 - 1e-3)))
+    monkeypatch.setattr(recut, "is_consumed", middle_and_ends)
     solid, rep = C2Blend.fillet_report(s, [top, lower], r, label="Box")
     assert not rep["blends"]
     assert "sewing its blend to the faces it meets left 9 free edge(s)" in \
@@ -4376,13 +4378,13 @@ def test_a_pocket_corner_of_a_convex_and_a_concave_fillet_is_set_back(monkeypatc
     concave blend's trimline on the wall x = 23, from (23, 17 - R, 7)
     (_assert_set_back). The top edge's trimline on the top face is the line y = R,
     z = 7 from x = 0 to 40.
-    Without the setback (fl.sb.Setback failing) OCCT's face between the rim's and the
+    Without the setback (sb.Setback failing) OCCT's face between the rim's and the
     corner's fillets is kept with them. The top face, cut along the top edge's blend
     and the kept fillets' edges, had no piece keeping the pocket's corner; every edge
     bounding it anew lies on OCCT's own top face (the blend's trimline is the exact
-    contact, as OCCT's on a plane), so that face takes its place (fl._occt_pieces): the
+    contact, as OCCT's on a plane), so that face takes its place (assembly._occt_pieces): the
     top edge's blend is still G2, and the solid passes the BOP check. With
-    fl._occt_pieces disabled too, the top edge is kept: no piece keeps the corner."""
+    assembly._occt_pieces disabled too, the top edge is kept: no piece keeps the corner."""
     s, top, rim, corner = shapes.pocket_block()
     for r in (0.5, 1.0, 1.5):
         solid, rep = C2Blend.fillet_report(s, [top, rim, corner], r, label="Block")
@@ -4398,7 +4400,7 @@ def test_a_pocket_corner_of_a_convex_and_a_concave_fillet_is_set_back(monkeypatc
 
     def fails(*args):
         raise ValueError("injected")
-    monkeypatch.setattr(fl.sb, "Setback", fails)
+    monkeypatch.setattr(sb, "Setback", fails)
     solid, rep = C2Blend.fillet_report(s, [top, rim, corner], 1.0, label="Block")
     assert_valid(solid)
     assert [b["where"] for b in rep["blends"]] == ["Block." + top]
@@ -4407,7 +4409,7 @@ def test_a_pocket_corner_of_a_convex_and_a_concave_fillet_is_set_back(monkeypatc
                   if k["where"].startswith("Block.")) == sorted(
         ["Block." + rim, "Block." + corner])
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
-    monkeypatch.setattr(fl, "_occt_pieces", lambda *args: None)
+    monkeypatch.setattr(assembly, "_occt_pieces", lambda *args: None)
     solid, rep = C2Blend.fillet_report(s, [top, rim, corner], 1.0, label="Block")
     assert not rep["blends"]
     assert any(k["where"] == "Block." + top and "no piece keeps the corner" in k["reason"]
@@ -4418,7 +4420,7 @@ def test_an_occt_fillet_that_crashes_is_tried_in_another_process():
     """OCCT's fillet builder crashes (a segmentation fault) on the rim arc of a hole
     half under a boss (shapes.boss_over_hole) at R = 0.001 to 0.5, as a separate Python
     with FreeCAD shows (it dies at 0.001); at 3e-4 it fails, at 5e-5 it succeeds.
-    C2Blend tries its fillets in another process first (fl.bc.trial_fillet, which gets
+    C2Blend tries its fillets in another process first (bc.trial_fillet, which gets
     the shape exactly and starts a new process after a crash): at R = 0.001 and 0.05 the
     error says that OCCT's fillet crashes, at 3e-4 it gives the radii OCCT accepts
     (its search crossing no crashing radius), and this process lives on."""
@@ -4428,11 +4430,11 @@ def test_an_occt_fillet_that_crashes_is_tried_in_another_process():
     rim = s.getElement(name)
     assert abs(rim.Length - 2.807) < 1e-3
     for r in (0.001, 0.01, 0.1):
-        assert fl.bc.trial_fillet(s, [rim], r) == (False, fl.bc.CRASHED)
+        assert bc.trial_fillet(s, [rim], r) == (False, bc.CRASHED)
     box = Part.makeBox(10, 10, 10)
-    assert fl.bc.trial_fillet(box, [box.Edge1], 2.0) == (True, None)
-    assert fl.bc.trial_fillet(s, [rim], 3e-4) == (False, "BRep_API: command not done")
-    assert fl.bc.trial_fillet(s, [rim], 5e-5) == (True, None)
+    assert bc.trial_fillet(box, [box.Edge1], 2.0) == (True, None)
+    assert bc.trial_fillet(s, [rim], 3e-4) == (False, "BRep_API: command not done")
+    assert bc.trial_fillet(s, [rim], 5e-5) == (True, None)
     here = os.path.dirname(os.path.abspath(__file__))
     code = ("import sys; sys.path[:0] = %r; import FreeCAD, Part, shapes; "
             "s, name = shapes.boss_over_hole(); print('ready', flush=True); "
@@ -4454,16 +4456,16 @@ def test_a_bounding_box_inverted_by_rounding_still_meets_its_neighbours():
     """OCCT gave a B-spline edge of a fillet (a boss over a blind hole, a random survey)
     a bounding box whose x minimum exceeded its maximum in the last digit: FreeCAD's
     BoundBox.intersect raises FloatingPointError on it, which stopped the fillet.
-    fl._boxes_meet compares the coordinates within tol."""
+    recut._boxes_meet compares the coordinates within tol."""
     a = FreeCAD.BoundBox(23.5834 + 1e-12, 20.2483, 13.697, 23.5834, 20.2483, 14.697)
     b = FreeCAD.BoundBox(23.0, 20.0, 13.0, 24.0, 21.0, 15.0)
     assert a.XMin > a.XMax and not a.isValid()
     with pytest.raises(FloatingPointError):
         b.intersect(a)
-    assert fl._boxes_meet(a, b, 1e-7) and fl._boxes_meet(b, a, 1e-7)
-    assert not fl._boxes_meet(a, FreeCAD.BoundBox(30, 30, 30, 31, 31, 31), 1e-7)
-    assert fl._boxes_meet(a, FreeCAD.BoundBox(23.5834 + 1e-8, 20, 13, 24, 21, 15), 1e-7)
-    assert not fl._boxes_meet(a, FreeCAD.BoundBox(23.5834 + 1e-6, 20, 13, 24, 21, 15), 1e-7)
+    assert recut._boxes_meet(a, b, 1e-7) and recut._boxes_meet(b, a, 1e-7)
+    assert not recut._boxes_meet(a, FreeCAD.BoundBox(30, 30, 30, 31, 31, 31), 1e-7)
+    assert recut._boxes_meet(a, FreeCAD.BoundBox(23.5834 + 1e-8, 20, 13, 24, 21, 15), 1e-7)
+    assert not recut._boxes_meet(a, FreeCAD.BoundBox(23.5834 + 1e-6, 20, 13, 24, 21, 15), 1e-7)
 
 
 def test_a_face_that_cannot_be_rebuilt_raises_instead_of_crashing_freecad():
@@ -4471,7 +4473,7 @@ def test_a_face_that_cannot_be_rebuilt_raises_instead_of_crashing_freecad():
     adds its other wires to the result unchecked: on a cylinder's face with a hole and
     an open outer wire the rebuild fails, and FreeCAD crashed (a segmentation fault in
     TopoDS_Builder::Add; a through hole's face grown at a pocket's corner, with a side
-    hole crossing it, did so during a random survey). fl._validate rebuilds each wire
+    hole crossing it, did so during a random survey). recut._validate rebuilds each wire
     alone first, and raises ValueError naming the wire; the face is left as it was. A
     valid face, or an invalid one whose wires each bound a face, is validated."""
     s = Part.makeCylinder(5, 10).cut(Part.makeCylinder(1, 20, V(-10, 0, 5), V(1, 0, 0)))
@@ -4485,17 +4487,17 @@ def test_a_face_that_cannot_be_rebuilt_raises_instead_of_crashing_freecad():
     assert not broken.isValid()
     wires = broken.Wires
     with pytest.raises(ValueError, match=r"its 1st wire \(of 2\) bounds no face"):
-        fl._validate(broken)
+        recut._validate(broken)
     assert not broken.isValid() and len(broken.Wires) == 2
     assert all(a.isSame(b) for a, b in zip(broken.Wires, wires))
-    fl._validate(face)
+    recut._validate(face)
     assert face.isValid()
     # on a copy of the surface, the edges lack their curves on it: rebuilt, wire by
     # wire, then whole, the face is the original's
     bare = Part.Face(face.Surface.copy(), face.Wires[0])
     bare.cutHoles([face.Wires[1]])
     assert not bare.isValid()
-    fl._validate(bare)
+    recut._validate(bare)
     assert bare.isValid() and abs(bare.Area - face.Area) < 1e-9 * face.Area
 
 
@@ -4614,7 +4616,7 @@ def test_a_loft_only_g1_at_its_seam_is_filleted_with_the_crease_there_explained(
     assert max(j["g1"] for j in junctions[:-1]) < ck.TOL_G1
     assert max(j["side_curvature_jump"] for j in junctions[:-1]) < 1e-6
     seam = junctions[-1]
-    assert ck.TOL_G1 < seam["g1"] < fl.JUNCTION_TURN
+    assert ck.TOL_G1 < seam["g1"] < solve.JUNCTION_TURN
     assert rep["verdict"] == "G0"
     loft = next(f for f in s.Faces if isinstance(f.Surface, Part.BSplineSurface))
     p = min((v.Point for v in solid.getElement(seam["edge"]).Vertexes),
@@ -4631,7 +4633,7 @@ def test_a_loft_only_g1_at_its_seam_is_filleted_with_the_crease_there_explained(
 
 def test_a_crease_too_large_at_a_seam_only_g1_keeps_occts_face_and_says_why():
     """The same loft through 12-point circles: the blends would meet at the seam at a
-    crease of 2.1e-5 rad, above fl.JUNCTION_TURN, so OCCT's face is kept. The reason
+    crease of 2.1e-5 rad, above solve.JUNCTION_TURN, so OCCT's face is kept. The reason
     said the face's curvature changed its rate there (as at a knot line crossed
     obliquely); it now says that the face's own curvature jumps there (the loft is only
     G1 across its seam: 0.3 relative, by the finite-difference curvatures above). The
@@ -4700,7 +4702,7 @@ def test_crease_at_an_oblique_knot_line_is_measured_and_in_the_verdict():
     to both faces, that meet at creases of 5e-7 to 2.6e-6 rad: the report lists each
     junction's crease, which counts in the verdict (G0). OCCT's own face meets the
     B-spline face at a larger angle (7.4e-6 rad), measured here with OCCT's normals. At
-    R = 2 the creases would reach 6.8e-5 rad, above fl.JUNCTION_TURN (OCCT's face:
+    R = 2 the creases would reach 6.8e-5 rad, above solve.JUNCTION_TURN (OCCT's face:
     3.2e-5), so OCCT's face is kept, and the reason says why."""
     s, edge = shapes.partial_revolution()
     solid, rep = C2Blend.fillet_report(s, [edge], 1.0, label="Rev")
@@ -4711,7 +4713,7 @@ def test_crease_at_an_oblique_knot_line_is_measured_and_in_the_verdict():
     assert len(rep["junctions"]) == 3 and rep["verdict"] == "G0"
     creases = [_normal_jump(solid, solid.getElement(j["edge"])) for j in rep["junctions"]]
     for j, c in zip(rep["junctions"], creases):
-        assert 1e-7 < c < fl.JUNCTION_TURN and j["g1"] == pytest.approx(c, rel=0.05, abs=1e-8)
+        assert 1e-7 < c < solve.JUNCTION_TURN and j["g1"] == pytest.approx(c, rel=0.05, abs=1e-8)
         assert j["verdict"] == "G0"
     lines = ck.format_report(rep)
     assert sum("meet at a crease" in x and "in the verdict" in x for x in lines) == 3, lines
@@ -4806,7 +4808,7 @@ def test_a_corner_patch_meeting_a_face_at_an_angle_is_filled_through_that_edge()
     lines = ck.format_report(rep)
     for c in corners:
         assert c["crease"]["edges"] == 1 and not c["crease"]["setback"]
-        assert c["edges"] == 3 and c["g1"] < fl.cn.MAX_SEAM, c
+        assert c["edges"] == 3 and c["g1"] < cn.MAX_SEAM, c
         assert any("it meets %s at an angle, as OCCT's corner patch does" % c["crease"]["face"]
                    in x for x in lines), lines
         face, wall = solid.getElement(c["face"]), solid.getElement(c["crease"]["face"])
@@ -4820,7 +4822,7 @@ def test_a_corner_patch_meeting_a_face_at_an_angle_is_filled_through_that_edge()
         assert 1.0 < occts < 2.5 and abs(ours - occts) < 0.1
         for e in face.Edges:
             if not e.isSame(crease):
-                assert _normal_jump(solid, e, 21) < fl.cn.MAX_SEAM
+                assert _normal_jump(solid, e, 21) < cn.MAX_SEAM
 
 
 def test_corner_patches_that_share_an_edge_are_filled_as_one_hole():
@@ -4851,7 +4853,7 @@ def test_corner_patches_that_share_an_edge_are_filled_as_one_hole():
     assert len(rep["corner_patches"]) == 2
     filling = solid.getElement(both["face"])
     assert abs(filling.Area / sum(f.Area for f in joined) - 1.0) < 0.1
-    assert both["g1"] < fl.cn.MAX_SEAM and both["g0"] < 1e-4
+    assert both["g1"] < cn.MAX_SEAM and both["g0"] < 1e-4
     assert both["verdict"] != "G2"  # a plate filling, never claimed G2
 
 
@@ -4868,8 +4870,8 @@ def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept(monkeyp
     onto such plates took 6.1 to 6.4 s of the 16 to 17 s of a fillet that kept OCCT's
     solid (--random-machined 40 --seed 32, part 21)."""
     measured = []  # the area of each filling whose seams corners.fill measures
-    seam = fl.cn._seam
-    monkeypatch.setattr(fl.cn, "_seam", lambda face, *a: measured.append(face.Area) or
+    seam = cn._seam
+    monkeypatch.setattr(cn, "_seam", lambda face, *a: measured.append(face.Area) or
                         seam(face, *a))
     s, names = shapes.tall_step()
     solid, rep = C2Blend.fillet_report(s, names, 2.5)
@@ -4890,7 +4892,7 @@ def test_a_plate_filling_larger_than_a_hemisphere_on_its_rim_is_not_kept(monkeyp
             assert float(m.group(4)) < float(m.group(1)) <= float(m.group(2))
             assert measured and max(measured) < float(m.group(1)), measured
             # no trial is pinned to OCCT's face at a setback corner (corners.fill)
-            assert int(m.group(3)) == len([t for t in fl.cn.TRIALS if not t[3]])
+            assert int(m.group(3)) == len([t for t in cn.TRIALS if not t[3]])
     assert len(rep["blends"]) == len(names) - 2
     assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
     corners = rep["corner_patches"]
@@ -4906,7 +4908,7 @@ def test_a_filling_that_breaks_the_sewn_solid_is_remade(monkeypatch):
     corners come out differently, and the solid sewn with one of them failed BRepCheck
     (the blend face of Rev.Edge2 and the filling at (-0.5193, -9.849, 0.2823)), so
     every fillet was kept as OCCT's (20 kept faces, measured before
-    fillet._rejected_fills). A filling that BRepCheck rejects, or whose neighbour it
+    assembly._rejected_fills). A filling that BRepCheck rejects, or whose neighbour it
     rejects, is now remade with the next trial, and the outcome does not depend on the
     rounding: all 12 blended, 8 corners filled."""
     _perturb_poles(monkeypatch)

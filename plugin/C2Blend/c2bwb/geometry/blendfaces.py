@@ -14,7 +14,8 @@ import Part
 from ..errors import C2BlendError, occt_message
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
-from .fillet import DATA_REL, check_params
+from .inputs import check_params
+from .solve import DATA_REL
 from .surface import frame_at_point
 from .trimlines import ROWS, pair_rows, spec_from_rows
 

@@ -401,7 +401,7 @@ def _mitre_cuts(b, partner, near, tol):
 
 def _next_run(run):
     """(the run before or after `run` across its junction, run's v there, that run's v
-    there) where run is the first or last run of a chain (fillet.solve_runs: group in
+    there) where run is the first or last run of a chain (solve.solve_runs: group in
     order), else None."""
     if not run.group:
         return None

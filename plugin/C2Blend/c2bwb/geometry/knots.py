@@ -8,7 +8,7 @@ whole chain then converge only algebraically. On a prism whose side is a cubic
 interpolating spline through 7 points, 1024 samples leave 4e-6 (relative), too rough for
 a G2 blend. Between two crossings the data are analytic. So a chain whose data are too
 rough is cut at the crossings into runs, as a chain whose side changes face is
-(rollingball.Run), and each run gets the pointwise blend (fillet.solve_runs).
+(rollingball.Run), and each run gets the pointwise blend (solve.solve_runs).
 
 Where a side changes face, the runs must end where the exact contact crosses the edge
 between the two faces, not at OCCT's split between its fillet faces: on B-spline walls

@@ -26,7 +26,7 @@ def separate(shape):
     """(solids, others) when `shape` is a compound of two or more solids, or of one with
     wires, edges or vertices beside it (others, kept in the result as they are), whose
     solids share no face or edge, and with no face outside them; None otherwise: one
-    solid, or a shape that fillet.check_solid refuses, saying why."""
+    solid, or a shape that inputs.check_solid refuses, saying why."""
     if shape.isNull() or shape.ShapeType not in ("Compound", "CompSolid"):
         return None
     solids = shape.Solids

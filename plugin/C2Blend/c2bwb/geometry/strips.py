@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""A face that winds round its periodic surface, cut into strips (fillet._fused).
+"""A face that winds round its periodic surface, cut into strips (recut._fused).
 
 The cylinder's face under a helical ridge of 2 or more turns (tests/freecad/shapes.
 helical_ridge) spans more than a period of its surface: with 3 turns its pcurves run

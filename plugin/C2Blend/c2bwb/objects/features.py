@@ -42,7 +42,7 @@ def shape_params(continuity, values):
 
 def object_values(continuity, params_):
     """(Gamma, Eta, Lambda, Rho) storing the shape parameters of continuity (as checked
-    by fillet.check_params), the inverse of shape_params. C3's five are divided by a4,
+    by inputs.check_params), the inverse of shape_params. C3's five are divided by a4,
     which leaves its PDE (homogeneous in them) unchanged. Raises ValueError when a4 is 0."""
     p = tuple(float(x) for x in params_)
     if continuity == "C1":

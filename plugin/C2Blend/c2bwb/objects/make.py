@@ -40,7 +40,7 @@ def _add(doc, type_name, name, proxy_cls, setup):
 
 
 def set_params(obj, continuity, shape_params, tension):
-    """Store continuity, its shape parameters (as fillet.check_params returns them) and
+    """Store continuity, its shape parameters (as inputs.check_params returns them) and
     tension in obj's properties (features.object_values). Raises ValueError for a C3
     a4 of 0."""
     obj.Continuity = continuity
@@ -51,8 +51,8 @@ def set_params(obj, continuity, shape_params, tension):
 def _checked_params(radius, continuity, shape_params, tension, label):
     """The shape parameters of continuity, checked with the radius and tension; raises
     C2BlendError naming label."""
-    from ..geometry import fillet as fl
-    sp = fl.check_params(radius, continuity, shape_params, tension, label)[1]
+    from ..geometry import inputs
+    sp = inputs.check_params(radius, continuity, shape_params, tension, label)[1]
     try:
         features.object_values(continuity, sp)
     except ValueError as ex:
@@ -65,9 +65,9 @@ def make_fillet(base, edges, radius, continuity="C2", shape_params=(1, 1, 1, 1),
     objects, or one of them) of document object base. The selection and parameters are
     validated before the document is touched; any later failure aborts the
     transaction, so the document is left as it was."""
-    from ..geometry import check as ck, fillet as fl
+    from ..geometry import check as ck, inputs
     sp = _checked_params(radius, continuity, shape_params, tension, base.Label)
-    fl.resolve_edges(base.Shape, edges, base.Label, [])  # at least one edge to fillet
+    inputs.resolve_edges(base.Shape, edges, base.Label, [])  # at least one edge to fillet
     # the whole selection is kept: a recompute reports the edges it leaves out
     names = [n for n, _ in ck.named_edges(base.Shape, edges, base.Label, "fillet")]
 

@@ -3,7 +3,7 @@
 params_panel."""
 from PySide import QtGui
 
-from ..geometry import fillet as fl
+from ..geometry import fillet as fl, inputs
 from ..objects import make
 from .params_panel import ParamsPanel
 
@@ -37,10 +37,10 @@ class FilletPanel(ParamsPanel):
 
     def fillet_parameters(self):
         """(radius, continuity, its shape parameters, tension): a setback becomes the
-        radius (fillet.radius_for_setback). Raises C2BlendError."""
+        radius (inputs.radius_for_setback). Raises C2BlendError."""
         size = self.radius.value()
         radius = size if self.size.currentText() == "Radius" else \
-            fl.radius_for_setback(self.base.Shape, self.edges, size, self.base.Label)
+            inputs.radius_for_setback(self.base.Shape, self.edges, size, self.base.Label)
         return (radius,) + self.blend_parameters()
 
     def compute(self):
