@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""Errors of the C2Blend workbench. Every message names the object and the edge."""
+"""Errors of the C2Blend workbench, and the wording shared by their messages (occt_message,
+listing). Every message names the object and the edge."""
 
 
 class C2BlendError(Exception):
@@ -26,3 +27,11 @@ def occt_message(ex):
     if isinstance(arg, dict):
         return str(arg.get("sErrMsg") or arg.get("sclassname") or type(ex).__name__)
     return str(ex) or type(ex).__name__
+
+
+def listing(names, most=None):
+    """'A, B and C' for a list of names; with `most`, the first `most` of a longer one
+    then 'and N more'."""
+    if most is not None and len(names) > most:
+        return "%s and %d more" % (", ".join(names[:most]), len(names) - most)
+    return " and ".join([", ".join(names[:-1]), names[-1]]) if len(names) > 1 else names[0]

@@ -8,11 +8,10 @@ import math
 
 import Part
 
-from ..errors import occt_message
+from ..errors import listing, occt_message
 from . import check as ck
 from . import bopcheck as bc
 from .surface import frame_at_point
-from . import inputs
 
 # the end of a kept blend's reason naming the unselected edges that would make its
 # vertex a corner (_with_others: OCCT's fillet succeeds with them)
@@ -130,7 +129,7 @@ def _failing_set(shape, names, radius, label):
                     not any(v.isSame(m) for m in meet):
                 meet.append(v)
     return (". It fails on %s together%s, though it succeeds at radius %g on %s%s"
-            % (inputs.listing(listed), ", where they meet at %s" % " and ".join(
+            % (listing(listed), ", where they meet at %s" % " and ".join(
                 "(%.4g, %.4g, %.4g)" % tuple(v.Point) for v in meet) if meet else "", radius,
                "any %d of them" % (len(rest) - 1) if len(rest) > 2 else "either alone",
                _with_others(shape, [e for _, e in names], meet, radius,

@@ -10,7 +10,7 @@ import numbers
 import FreeCAD
 import Part
 
-from ..errors import C2BlendError
+from ..errors import C2BlendError, listing
 from . import check as ck
 from .rollingball import TANGENT_ANGLE, midpoint
 from .surface import angle, frame_at_point
@@ -141,14 +141,6 @@ def _free_edges(solid):
         if not e.Degenerated and len(faces) == 1 and not e.isSeam(faces[0]):
             out.append(e)
     return out
-
-
-def listing(names, most=None):
-    """'A, B and C' for a list of names; with `most`, the first `most` of a longer one
-    then 'and N more'."""
-    if most is not None and len(names) > most:
-        return "%s and %d more" % (", ".join(names[:most]), len(names) - most)
-    return " and ".join([", ".join(names[:-1]), names[-1]]) if len(names) > 1 else names[0]
 
 
 def positive_number(x, what, label, field=None):
