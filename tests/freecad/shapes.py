@@ -587,6 +587,35 @@ def hole_through_pocket_wall():
     return s, names, vertical
 
 
+def side_hole_through_hole_floor():
+    """A 34.362 x 37.006 x 9.497 block with a blind hole r = 5.937 about (18.905,
+    10.745) down to its floor z = 5.229, crossed by a side hole r = 2.676 along x (axis
+    y = 12.246, z = 4.749) that cuts the floor along two lines (y = 12.246 -+ 2.633)
+    and the hole's wall on both sides (--random-machined 40 --seed 51, part 19, without
+    its other side hole). At (x0, 9.613, 5.229), x0 = 13.077 and 24.733, the floor's line
+    on the side hole (convex), the side hole's edge on the wall (convex) and the floor's
+    arc on the wall (concave) meet: the line and that arc join the same two vertices.
+    Returns (solid, names of the floor's line at y = 9.613 and of the side hole's edges
+    on the wall that end at its ends, name of the floor's arc at y < 9.613)."""
+    s = Part.makeBox(34.362, 37.006, 9.497)
+    s = s.cut(Part.makeCylinder(5.937, 5.268, V(18.905, 10.745, 5.229)))
+    s = s.cut(Part.makeCylinder(2.676, 36.362, V(-1, 12.246, 4.749), V(1, 0, 0)))
+    s = s.removeSplitter()
+
+    def named(test):
+        return ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges) if test(e)]
+
+    def floor(e):
+        return abs(e.BoundBox.ZMax - 5.229) < 1e-6 and e.BoundBox.ZLength < 1e-6 and \
+            e.BoundBox.YMax < 9.62
+    line = named(lambda e: floor(e) and isinstance(e.Curve, Part.Line))
+    arc = named(lambda e: floor(e) and isinstance(e.Curve, Part.Circle))
+    ends = [v.Point for v in s.getElement(line[0]).Vertexes]
+    walls = named(lambda e: isinstance(e.Curve, Part.BSplineCurve) and any(
+        (v.Point - p).Length < 1e-6 for v in e.Vertexes for p in ends))
+    return s, line + walls, arc[0]
+
+
 def slot_over_side_hole():
     """A 31.6 x 29.1 x 13.6 block with a side hole r = 4.068 along x (axis y = 12.85,
     z = 6.780) and a slot 4.515 wide from above down to z = 6.357, its round ends

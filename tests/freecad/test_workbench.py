@@ -4076,6 +4076,45 @@ def test_where_a_hole_cuts_a_pocket_s_wall_its_rim_and_the_floor_s_edges_are_set
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
 
 
+def test_trimlines_that_occt_ends_at_one_point_are_joined():
+    """A blind hole's floor that a side hole crosses (shapes.side_hole_through_hole_floor),
+    R = 0.391: the floor's line on the side hole and the side hole's edges on the hole's
+    wall at its ends are kept as OCCT's (the line's blend would leave the wall away from
+    its corners), and the reason names the third edge at those vertices, the floor's arc
+    on the wall, which joins the same two vertices as the line: by its ends and its
+    middle, x = 18.905 -+ sqrt(5.937^2 - (10.745 - y0)^2), y0 = 12.246 - sqrt(2.676^2 -
+    0.48^2), and (18.905, 10.745 - 5.937), closed forms. It used to name it by its ends
+    only, which read as the line, already selected. Selected with that arc, OCCT fills
+    both corners with patches touching the wall at one point each, where the blends on
+    the wall end 2e-5 apart (OCCT's vertex tolerance 8.4e-5): the wall, cut along them
+    as ending apart, kept the strip the fillets consume and the sewing left 13 free
+    edges (recut.end_gap). Now every trimline is G2, nothing is kept, and the solid
+    passes the BOP check (--random-machined 40 --seed 51, part 19)."""
+    s, names, arc = shapes.side_hole_through_hole_floor()
+    _, rep = C2Blend.fillet_report(s, names, 0.391)
+    kept = [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")]
+    assert kept
+    y0 = 12.246 - math.sqrt(2.676 ** 2 - 0.48 ** 2)
+    dx = math.sqrt(5.937 ** 2 - (10.745 - y0) ** 2)
+    for k in kept:
+        m = re.search(r"; with the edge from \((.*)\) to \((.*)\) through \((.*)\) selected "
+                      r"too, the fillets meet at a corner there instead \(OCCT's fillet of "
+                      r"them succeeds\)$", k["reason"])
+        assert m, k["reason"]
+        a, b, mid = ([float(c) for c in g.split(", ")] for g in m.groups())
+        # printed to 4 digits (%.4g)
+        assert sorted([a[0], b[0]]) == pytest.approx([18.905 - dx, 18.905 + dx], rel=5e-4)
+        assert a[1:] == b[1:] == pytest.approx([y0, 5.229], rel=5e-4)
+        assert mid == pytest.approx([18.905, 10.745 - 5.937, 5.229], rel=5e-4)
+    solid, rep = C2Blend.fillet_report(s, names + [arc], 0.391)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == []
+    assert len(rep["trimlines"]) == 8 and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    corners = rep["corner_patches"]
+    assert len(corners) == 2 and all(c["g1"] < cn.MAX_SEAM for c in corners)
+
+
 @pytest.mark.parametrize("radius", [0.15, 0.3])
 def test_a_rim_ending_on_two_pieces_of_one_wall_grows_each(radius):
     """shapes.hole_through_pocket_wall, the hole's rim on the floor alone (its two

@@ -146,7 +146,10 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
             if t.occt:
                 raise ValueError("an edge of a fillet kept as OCCT's, or of a corner "
                                  "patch, leaves it away from its corners")
-            pieces = recut.cut_face(t.orig, t.inside, sharp, t.legs, tol)
+            # trimlines that OCCT's fillet ends at one point of the face are cut
+            # as meeting there (recut.end_gap)
+            gap = recut.end_gap(t.inside, result.Vertexes, tol)
+            pieces = recut.cut_face(t.orig, t.inside, sharp, t.legs, max(tol, 2.0 * gap))
             if not pieces and _occt_pieces(result, t, drop + kept_fillets, tol):
                 # every piece touches an edge the fillets consume, yet OCCT's fillet
                 # keeps some of the face (a pocket's wall under a boss, next to fillets

@@ -140,8 +140,8 @@ def _with_others(shape, edges, vertices, radius, phrase):
     """phrase % 'the edge from (x, y, z) to (x, y, z) and ...' for the edges of `shape`
     between two faces that end at any of `vertices` and are not among `edges`, where
     OCCT's fillet at `radius` succeeds with them added to `edges`; '' where there are
-    none or it fails. The edges are named by their ends: on a compound, the names of
-    the edges of one solid are not the user's."""
+    none or it fails. The edges are named by their ends (_by_points): on a compound,
+    the names of the edges of one solid are not the user's."""
     others = []
     for v in vertices:
         for e in shape.ancestorsOfType(v, Part.Edge):
@@ -150,9 +150,24 @@ def _with_others(shape, edges, vertices, radius, phrase):
                 others.append(e)
     if not others or not _works(shape, edges + others, radius):
         return ""
-    return phrase % " and ".join(
-        "the edge from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)"
-        % (tuple(e.Vertexes[0].Point) + tuple(e.Vertexes[-1].Point)) for e in others)
+    return phrase % " and ".join(_by_points(shape, e) for e in others)
+
+
+def _by_points(shape, edge):
+    """'the edge from (x, y, z) to (x, y, z)', naming an edge of `shape` by its ends, with
+    ' through (x, y, z)', its middle, where its ends do not tell it from every other
+    edge: a closed edge, or another edge between the same vertices (on a blind hole's
+    floor that a side hole cuts, the floor's edge on the side hole and the arc of the
+    hole's wall join the same two points)."""
+    ends = [v.Point for v in (edge.Vertexes[0], edge.Vertexes[-1])]
+    out = "the edge from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g)" % (
+        tuple(ends[0]) + tuple(ends[1]))
+    twins = [e for e in shape.Edges if not e.isSame(edge) and not e.Degenerated and
+             all(any(v.isSame(w) for w in e.Vertexes) for v in edge.Vertexes)]
+    if twins or edge.Vertexes[0].isSame(edge.Vertexes[-1]):
+        a, b = edge.ParameterRange
+        out += " through (%.4g, %.4g, %.4g)" % tuple(edge.valueAt(0.5 * (a + b)))
+    return out
 
 
 TIGHT_POINTS = 9  # per edge, where tight_arc compares the ball's offset and the curvature

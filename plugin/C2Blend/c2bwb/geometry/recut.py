@@ -312,6 +312,34 @@ def edge_on_face(edge, face, tol):
     return all(_on_face(face, p, tol) for p in edge_points(edge))
 
 
+def end_gap(tools, vertices, tol):
+    """The widest gap between the ends of two of `tools` (edges lying on one face) that
+    stand for one vertex of OCCT's fillet: more than tol apart, both within the
+    tolerance of one of `vertices` (its result's), neither on another tool; 0.0 where
+    there are none. OCCT's fillet may end two fillets at one point of a face, its corner
+    patch touching the face there only; the blends end where their own exact contacts
+    reach the face, apart by up to OCCT's tolerance there, and a cut along them within
+    tol is not closed: the face keeps the strip the fillets consume, and the sewing
+    leaves free edges. Seen on a blind hole's wall where a side hole crosses its floor,
+    with the floor's edge on the wall and the side hole's edges on the wall and on the
+    floor filleted (shapes.side_hole_through_hole_floor): ends 2.05e-5 apart, within
+    OCCT's vertex tolerance there, 8.4e-5. A short edge joining them instead is shorter
+    than its vertices' tolerance, which OCCT's BOP check rejects (TooSmallEdge)."""
+    ends = [(e, v.Point, {k for k, w in enumerate(vertices)
+                          if (w.Point - v.Point).Length <= w.Tolerance})
+            for e in tools for v in (e.Vertexes[0], e.Vertexes[-1])]
+
+    def free(e, p):
+        return not any(x is not e and x.distToShape(Part.Vertex(p))[0] <= tol for x in tools)
+    gap = 0.0
+    for k, (e, p, at) in enumerate(ends):
+        for f, q, also in ends[k + 1:]:
+            if f is not e and at & also and (p - q).Length > max(tol, gap) and \
+                    free(e, p) and free(f, q):
+                gap = (p - q).Length
+    return gap
+
+
 def is_consumed(edge, kept, tol):
     """True when no part of edge lies on `kept` (the edges of OCCT's fillet result, a
     compound), tested at its middle and at 1e-3 of its length from each end: an edge
