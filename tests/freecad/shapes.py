@@ -616,6 +616,58 @@ def side_hole_through_hole_floor():
     return s, line + walls, arc[0]
 
 
+def turned_hole_floor_block():
+    """A 38.06 x 35.07 x 13.32 block with a side hole r = 3.802 along x (axis y = 26.18,
+    z = 6.658) and a blind hole r = 5.512 about (29.51, 24.96) down to its floor z =
+    4.477, which the side hole crosses, turned about (0.219, 0.734, -0.643) by 218.1
+    degrees and moved to (-259.4, -535.0, 982.9) by its Placement (--random-machined 40
+    --seed 54 --turned, part 33, to full precision). Returns (solid, name of the floor's
+    line on the side hole at y = 23.07, radius 0.127)."""
+    s = Part.makeBox(38.05940311331791, 35.07499794225333, 13.316386457894428)
+    s = s.cut(Part.makeCylinder(3.8021169907633783, 40.05940311331791,
+                                V(-1, 26.18362183404797, 6.658193228947214),
+                                V(1, 0, 0))).removeSplitter()
+    s = s.cut(Part.makeCylinder(5.511969257421023, 9.839043552279286,
+                                V(29.51268829178503, 24.96434737619817,
+                                  4.477342905615142))).removeSplitter()
+    (line,) = ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if isinstance(e.Curve, Part.Line) and e.BoundBox.ZLength < 1e-9
+               and abs(e.BoundBox.ZMin - 4.477342905615142) < 1e-9
+               and abs(e.BoundBox.YMin - 23.07) < 1e-2]
+    s.Placement = FreeCAD.Placement(
+        V(-259.4225708561537, -535.0202060088602, 982.8992516527635),
+        FreeCAD.Rotation(0.20709089991077514, 0.69351845133145, -0.6079429237305805,
+                         -0.32642138153449224))
+    return s, line, 0.127
+
+
+def slot_in_side_hole():
+    """A 21.48 x 23.73 x 7.285 block with a pocket 4.202 x 3.152 down to z = 3.254, a slot
+    3.468 wide down to z = 2.685 (its round ends r = 1.734 about x = 10.68 and 13.33, y =
+    12.66) and a side hole r = 2.185 along x (axis y = 14.52, z = 3.642), which the slot
+    cuts near the top of the hole, at its seam (--random-machined 40 --seed 54 --turned,
+    part 35, unturned, to full precision). Returns (solid, names of the edges where the
+    slot's ends meet the side hole from (10.68, 14.39, 5.82) and from (15.07, 12.66,
+    4.80))."""
+    s = Part.makeBox(21.48377281256226, 23.731317680041048, 7.28472017365125)
+    s = s.cut(Part.makeBox(4.202086032796315, 3.1515645245972363, 5.03080466723819,
+                           V(7.062276327200802, 9.695799037562308, 3.25391550641306)))
+    s = s.removeSplitter()
+    w, depth, y, z = 1.7340959123676538, 5.599872179936716, 12.660553822122019, \
+        2.684847993714534
+    tool = Part.makeBox(2.64987974774975, 2 * w, depth, V(10.682027303855419, y - w, z))
+    for x in (10.682027303855419, 13.33190705160517):
+        tool = tool.fuse(Part.makeCylinder(w, depth, V(x, y, z)))
+    s = s.cut(tool).removeSplitter()
+    s = s.cut(Part.makeCylinder(2.1854160520953747, 23.48377281256226,
+                                V(-1, 14.515970497725384, 3.642360086825625),
+                                V(1, 0, 0))).removeSplitter()
+    starts = [V(10.682, 14.395, 5.824), V(15.066, 12.661, 4.797)]
+    return s, ["Edge%d" % (i + 1) for i, e in enumerate(s.Edges)
+               if isinstance(e.Curve, Part.BSplineCurve)
+               and any((e.Vertexes[0].Point - p).Length < 1e-2 for p in starts)]
+
+
 def slot_over_side_hole():
     """A 31.6 x 29.1 x 13.6 block with a side hole r = 4.068 along x (axis y = 12.85,
     z = 6.780) and a slot 4.515 wide from above down to z = 6.357, its round ends

@@ -4115,6 +4115,52 @@ def test_trimlines_that_occt_ends_at_one_point_are_joined():
     assert len(corners) == 2 and all(c["g1"] < cn.MAX_SEAM for c in corners)
 
 
+def test_a_placed_face_that_fails_to_grow_grows_in_its_own_frame():
+    """A blind hole's floor crossed by a side hole, on a part turned and moved 1100 from
+    the origin by its Placement (shapes.turned_hole_floor_block), its floor's line on the
+    side hole filleted at R = 0.127: the hole's wall, grown at the fillet's two ends, was
+    not valid once rebuilt, and its fix gave a NULL shape, so the fillet was kept as
+    OCCT's; the same part unplaced was G2. The wall now grows in its own frame
+    (recut.grown_face): G2 at both trimlines, nothing kept, and the volume is the
+    unplaced part's and its centre of mass the unplaced part's placed (a rigid motion
+    keeps both)."""
+    s, line, radius = shapes.turned_hole_floor_block()
+    solid, rep = C2Blend.fillet_report(s, [line], radius)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == []
+    assert len(rep["trimlines"]) == 2 and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    bare = s.copy()
+    bare.Placement = FreeCAD.Placement()
+    unplaced, _ = C2Blend.fillet_report(bare, [line], radius)
+    assert solid.Volume == pytest.approx(unplaced.Volume, rel=1e-9)
+    assert (solid.CenterOfMass - s.Placement.multVec(unplaced.CenterOfMass)).Length < 1e-6
+
+
+def test_a_strip_that_a_seam_cuts_in_two_is_dropped_whole():
+    """A slot cutting a side hole near the top of the hole, at its wall's seam
+    (shapes.slot_in_side_hole), the slot's ends filleted where they meet the side hole,
+    R = 0.136: the fillet's trimline on the hole's wall crosses the seam, which cut the
+    strip the fillet consumes in two, and the sliver beyond the seam (0.041 mm2), which
+    touches no consumed edge, was kept beside the blend: the sewing left free edges and
+    the fillet was kept as OCCT's. Pieces that meet along the seam are now one region
+    (recut.cut_face). Every trimline is G2, nothing is kept, and the hole's wall keeps
+    the area OCCT's fillet leaves it, to 2e-5 (the two trimlines differ by OCCT's
+    tolerance only)."""
+    s, names = shapes.slot_in_side_hole()
+    solid, rep = C2Blend.fillet_report(s, names, 0.136)
+    assert_valid(solid)
+    assert rep["kept_occt_faces"] == []
+    assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+
+    def wall(shape):  # the area of the side hole's wall
+        return sum(f.Area for f in shape.Faces if isinstance(f.Surface, Part.Cylinder)
+                   and abs(f.Surface.Radius - 2.1854160520953747) < 1e-9)
+    occt = s.makeFillet(0.136, [s.getElement(n) for n in names])
+    assert wall(solid) == pytest.approx(wall(occt), rel=2e-5)  # the sliver: 1.5e-4
+
+
 @pytest.mark.parametrize("radius", [0.15, 0.3])
 def test_a_rim_ending_on_two_pieces_of_one_wall_grows_each(radius):
     """shapes.hole_through_pocket_wall, the hole's rim on the floor alone (its two

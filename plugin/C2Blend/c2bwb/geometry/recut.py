@@ -11,6 +11,7 @@ After sewing, edge tolerances are raised to what the new pcurves need
 """
 import math
 
+import FreeCAD
 import Part
 
 from ..errors import occt_message
@@ -194,6 +195,36 @@ def _end_at(edge, corner, p, tol):
 
 
 def grown_face(face, section, whole, corner, region, legs, tol):
+    """_grown, and where that fails on a face placed away from its own frame (a part
+    with a Placement: its faces carry it as their location), _grown on the face in its
+    own frame, its result placed back. OCCT's rebuild of a located face may fail where
+    the same face in its own frame is rebuilt: a blind hole's wall, which a side hole
+    crosses, grown at the ends of the floor's fillet along the side hole, on a part
+    turned and moved 1100 from the origin, was not valid and its fix gave a NULL shape
+    (--random-machined 40 --seed 54 --turned, part 33; shapes.turned_hole_floor_block).
+    Raises as _grown does."""
+    try:
+        return _grown(face, section, whole, corner, region, legs, tol)
+    except (ValueError, Part.OCCError):
+        if face.Placement.isIdentity():
+            raise
+    place = face.Placement
+    back = place.inverse()
+
+    def own(x):  # x in the face's own frame
+        y = x.copy()
+        y.transformShape(back.toMatrix())
+        return y
+    bare = face.copy()
+    bare.Placement = FreeCAD.Placement()
+    cut = own(section)
+    out = _grown(bare, cut, cut if whole is section else own(whole), back.multVec(corner),
+                 own(region), [own(g) for g in legs], tol)
+    out.Placement = place
+    return out
+
+
+def _grown(face, section, whole, corner, region, legs, tol):
     """face (a piece of an original face that keeps the vertex `corner`) grown by
     `region` (_growth, whose legs run from the section's ends to the corner): its two
     edges at the corner end instead at the ends of `section` (shortened or extended
@@ -381,7 +412,9 @@ def cut_face(face, tools, sharp, legs, tol):
     is tried the next way too, and taken only where none does better: the tube of a
     helical ridge of 2.5 turns, rebased, was cut into a piece of 402.2 mm2 that is not
     valid, which OCCT's distance put on the junction's edges, so it was dropped and the
-    sewing left free edges; as it is, it is cut into three valid pieces."""
+    sewing left free edges; as it is, it is cut into three valid pieces. Pieces that
+    meet along an edge no tool runs along (the face's seam) are one region of the
+    surface, kept or dropped together."""
     face = face.copy()  # OCCT may rewrite the pcurves of edges this face shares with
     # faces of the solid being assembled (a cylinder's seam): cut a copy
     areas = {}
@@ -424,7 +457,22 @@ def cut_face(face, tools, sharp, legs, tol):
                    and all(g.distToShape(Part.Vertex(p))[0] > tol for g in legs)
                    for p in edge_points(edge, (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)))
 
-    kept = [f for f in pieces if not any(touches(f, e) for e in sharp)]
+    gone = [any(touches(f, e) for e in sharp) for f in pieces]
+    # pieces that meet along an edge no tool runs along (the face's seam, or a strip's
+    # cutting line) are one region of the surface, kept or dropped together: the strip
+    # a fillet consumes on a side hole's wall, where its trimline crosses the wall's
+    # seam, was cut in two by the seam, and the sliver beyond it, which touches no
+    # sharp edge, was kept (shapes.slot_in_side_hole)
+    links = [(i, j) for i, a in enumerate(pieces) for j, b in enumerate(pieces[:i])
+             if any(not e.Degenerated and not _along_tool(e, tools, tol) for e in a.Edges
+                    if any(e.isSame(x) for x in b.Edges))]
+    while True:
+        spread = [(i, j) for i, j in links if gone[i] != gone[j]]
+        if not spread:
+            break
+        for i, j in spread:
+            gone[i] = gone[j] = True
+    kept = [f for f, g in zip(pieces, gone) if not g]
     return st.merged(kept) if in_strips else kept
 
 
@@ -461,6 +509,12 @@ def _fused(face, tools, tol, areas=None, in_strips=False):
             return ("OCCT's general fuse did not cut the face along the %s of the %d "
                     "trimline edges on it" % (_ordinal(k + 1), len(tools)))
     return pieces
+
+
+def _along_tool(edge, tools, tol):
+    """Whether edge runs along one of `tools` (at its inner points, within 10 tol)."""
+    return any(all(t.distToShape(Part.Vertex(p))[0] <= 10.0 * tol for p in edge_points(edge))
+               for t in tools)
 
 
 def _ordinal(n):
