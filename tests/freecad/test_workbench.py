@@ -619,7 +619,7 @@ def test_an_end_cut_far_from_the_origin(far):
 
 
 def test_a_mitre_far_from_the_origin_is_cut():
-    """shapes.placed_l_block, 13 edges at R = 0.663, about 1100 from the origin: at a
+    """shapes.placed_l_block, 13 edges at R = 0.663, about 1150 from the origin: at a
     mitre, Newton's method for the trimlines' crossing stalled at a residual of
     1.6e-11, 86 units of rounding of the coordinates (850), above the 64 it allowed,
     and two fillets and three beside them were kept as OCCT's. It now allows 256. Every
@@ -4116,7 +4116,7 @@ def test_trimlines_that_occt_ends_at_one_point_are_joined():
 
 
 def test_a_placed_face_that_fails_to_grow_grows_in_its_own_frame():
-    """A blind hole's floor crossed by a side hole, on a part turned and moved 1100 from
+    """A blind hole's floor crossed by a side hole, on a part turned and moved 1150 from
     the origin by its Placement (shapes.turned_hole_floor_block), its floor's line on the
     side hole filleted at R = 0.127: the hole's wall, grown at the fillet's two ends, was
     not valid once rebuilt, and its fix gave a NULL shape, so the fillet was kept as

@@ -200,7 +200,7 @@ def grown_face(face, section, whole, corner, region, legs, tol):
     own frame, its result placed back. OCCT's rebuild of a located face may fail where
     the same face in its own frame is rebuilt: a blind hole's wall, which a side hole
     crosses, grown at the ends of the floor's fillet along the side hole, on a part
-    turned and moved 1100 from the origin, was not valid and its fix gave a NULL shape
+    turned and moved 1150 from the origin, was not valid and its fix gave a NULL shape
     (--random-machined 40 --seed 54 --turned, part 33; shapes.turned_hole_floor_block).
     Raises as _grown does."""
     try:
