@@ -619,7 +619,7 @@ def test_an_end_cut_far_from_the_origin(far):
 
 
 def test_a_mitre_far_from_the_origin_is_cut():
-    """shapes.placed_l_block, 13 edges at R = 0.663, about 1150 from the origin: at a
+    """shapes.placed_l_block, 13 edges at R = 0.663, about 1100 from the origin: at a
     mitre, Newton's method for the trimlines' crossing stalled at a residual of
     1.6e-11, 86 units of rounding of the coordinates (850), above the 64 it allowed,
     and two fillets and three beside them were kept as OCCT's. It now allows 256. Every
