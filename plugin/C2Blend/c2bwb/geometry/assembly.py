@@ -141,6 +141,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     # left between two fillets holds a piece of its seam, none of which OCCT keeps
     sharp = [e for e in shape.Edges if len(ck.edge_faces(shape, e)) == 2
              and not any(e.isSame(r) for r in result.Edges) and recut.is_consumed(e, kept, tol)]
+    occt_vertices = result.Vertexes  # for recut.end_gap
     for t in touched:
         try:
             if t.occt:
@@ -148,7 +149,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
                                  "patch, leaves it away from its corners")
             # trimlines that OCCT's fillet ends at one point of the face are cut
             # as meeting there (recut.end_gap)
-            gap = recut.end_gap(t.inside, result.Vertexes, tol)
+            gap = recut.end_gap(t.inside, occt_vertices, tol)
             pieces = recut.cut_face(t.orig, t.inside, sharp, t.legs, max(tol, 2.0 * gap))
             if not pieces and _occt_pieces(result, t, drop + kept_fillets, tol):
                 # every piece touches an edge the fillets consume, yet OCCT's fillet

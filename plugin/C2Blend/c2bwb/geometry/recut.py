@@ -458,11 +458,11 @@ def cut_face(face, tools, sharp, legs, tol):
                    for p in edge_points(edge, (0.0, 1e-3, 0.25, 0.5, 0.75, 1 - 1e-3, 1.0)))
 
     gone = [any(touches(f, e) for e in sharp) for f in pieces]
-    # pieces that meet along an edge no tool runs along (the face's seam, or a strip's
-    # cutting line) are one region of the surface, kept or dropped together: the strip
-    # a fillet consumes on a side hole's wall, where its trimline crosses the wall's
-    # seam, was cut in two by the seam, and the sliver beyond it, which touches no
-    # sharp edge, was kept (shapes.slot_in_side_hole)
+    # pieces that meet along an edge no tool runs along (the face's seam; the pieces of
+    # different strips share no edge) are one region of the surface, kept or dropped
+    # together: the strip a fillet consumes on a side hole's wall, where its trimline
+    # crosses the wall's seam, was cut in two by the seam, and the sliver beyond it,
+    # which touches no sharp edge, was kept (shapes.slot_in_side_hole)
     links = [(i, j) for i, a in enumerate(pieces) for j, b in enumerate(pieces[:i])
              if any(not e.Degenerated and not _along_tool(e, tools, tol) for e in a.Edges
                     if any(e.isSame(x) for x in b.Edges))]
