@@ -519,6 +519,25 @@ def chamfered_box(c=0.78):
                         and e.BoundBox.YMin > 33.9))
 
 
+def chamfered_pocket(c=1.2):
+    """A 24 x 28 x 14 block with a pocket x from 4 to 12, y from 5 to 11, its floor at
+    z = 6, whose rim edge at x = 4 is chamfered by c (as machined seed 60's part 5,
+    turned). Returns (solid, name of the top edge at y = 5 over the chamfer, from
+    (4 - c, 5, 14) to (4, 5, 14), name of the chamfer's edge on the pocket's end wall
+    y = 5, from (4 - c, 5, 14) to (4, 5, 14 - c)). Both meet at (4 - c, 5, 14) with the
+    chamfer's top edge, convex, 135 degrees."""
+    b = Part.makeBox(24, 28, 14).cut(Part.makeBox(8, 6, 9, V(4, 5, 6))).removeSplitter()
+    s = b.makeChamfer(c, [b.getElement(_edge_named(
+        b, lambda e: abs(e.BoundBox.XMin - 4) < 1e-9 and e.BoundBox.XLength < 1e-9
+        and e.BoundBox.ZMin > 14 - 1e-9))])
+
+    def on_end_wall(e):
+        return abs(e.BoundBox.YMin - 5) < 1e-9 and e.BoundBox.YLength < 1e-9 \
+            and abs(e.BoundBox.XMin - 4 + c) < 1e-9 and abs(e.BoundBox.XMax - 4) < 1e-9
+    return (s, _edge_named(s, lambda e: on_end_wall(e) and e.BoundBox.ZLength < 1e-9),
+            _edge_named(s, lambda e: on_end_wall(e) and e.BoundBox.ZLength > c - 1e-9))
+
+
 def pocket_block():
     """A 40 x 20 x 7 block with a pocket 5 deep, x from 15 to 23 and y from 10 to 17.
     Returns (solid, name of the block's top edge at y = 0, name of the pocket's rim edge

@@ -1128,14 +1128,14 @@ def test_edges_on_which_occt_fails_together_are_named():
     assert sorted(m.groups()[2:]) == sorted(_from_to(e) for e in third)
 
 
-def _assert_set_back(solid, rep, radius, p0, along_rim, along_trimline, out):
+def _assert_set_back(solid, rep, radius, p0, along_rim, along_trimline, out, bump=False):
     """A setback corner (setback.py) where a concave fillet's trimline on the wall W
     reaches W's rim, left sharp, at p0: W's rim (direction along_rim from p0) and that
     trimline (along_trimline, down W from p0) end at the points a radius from p0, which
     the filling's crease on W joins; the filling meets its blends and the top face T
     within corners.MAX_SEAM, and it does not rise above T by more than twice its
-    seams' gap (out: T's outward normal, p0 lies on T). Every trimline is G2 and no
-    fillet is kept."""
+    seams' gap (out: T's outward normal, p0 lies on T), unless bump. Every trimline is
+    G2 and no fillet is kept. Returns how far the filling rises above T."""
     assert_valid(solid)
     assert [k for k in rep["kept_occt_faces"] if not k["where"].startswith("corner")] == []
     assert rep["trimlines"] and all(t["verdict"] == "G2" for t in rep["trimlines"])
@@ -1148,8 +1148,10 @@ def _assert_set_back(solid, rep, radius, p0, along_rim, along_trimline, out):
     assert isinstance(wall.Surface, Part.Plane)
     assert all(wall.distToShape(Part.Vertex(p))[0] < 1e-7 for p in (a, b))
     fill = solid.getElement(corner["face"])
-    points, _ = fill.tessellate(1e-3 * radius)
-    assert max((p - p0).dot(out) for p in points) < 2 * corner["g0"] + 1e-7, corner
+    points, _ = fill.tessellate((1e-2 if bump else 1e-3) * radius)  # a bump's is slow
+    rise = max((p - p0).dot(out) for p in points)
+    assert bump or rise < 2 * corner["g0"] + 1e-7, corner
+    return rise
 
 
 @pytest.mark.parametrize("lower, taller, radius", [
@@ -4453,6 +4455,54 @@ def test_an_edge_two_fillets_shorten_from_both_ends_keeps_its_piece(monkeypatch)
     assert not rep["blends"]
     assert "sewing its blend to the faces it meets left 9 free edge(s)" in \
         rep["kept_occt_faces"][0]["reason"]
+
+
+@pytest.mark.parametrize("radius", [0.171, 0.45])
+def test_a_setback_corner_round_a_corner_of_the_top_is_not_filled_with_a_bump(radius,
+                                                                             monkeypatch):
+    """shapes.chamfered_pocket: the top edge at y = 5 over the chamfer (convex) and the
+    chamfer's edge on the pocket's end wall (concave), whose third edge at their
+    vertex V = (2.8, 5, 14), the chamfer's top edge, is not selected: a setback corner,
+    with T the top and W the chamfer. The concave trimline on W lies R off the end
+    wall, whose normal is W's turned by 90 degrees: it reaches W's rim at
+    P0 = (2.8, 5 + R, 14), and runs down W along (1, 0, -1) / sqrt 2.
+    The setback's edge on T, from the convex trimline's end to A = P0 + (0, R, 0),
+    must go round V, T's corner of 270 degrees, which falls in the hole. With its first
+    leg 0.7 of its chord (setback.FIRST_LEGS) it cut across that corner between two of
+    the 16 points tested to lie on T (at R = 0.171 it left T at (2.971, 5, 14) and came
+    back at (2.8, 5.016, 14)), which left V on T's piece: the cut dropped all of T but
+    a sliver, and the sewing left 12 free edges, so both fillets were kept, at every
+    radius from 0.05 to 0.45 (and, on machined seed 60's part 5, turned, every fillet
+    of the part). Now the edge on T may not meet T's edges (setback.END_SPAN), and the
+    corner is set back (_assert_set_back) with V in the hole; but every plate filling
+    of it bumps out above T, tangent to T all round V (measured here on the filling
+    kept with corners.MAX_BULGE lifted). So by default the corner is not filled: both
+    fillets are kept with OCCT's face between them, and the reason gives the rise."""
+    s, top, chamfer_edge = shapes.chamfered_pocket()
+    solid, rep = C2Blend.fillet_report(s, [top, chamfer_edge], radius, label="Block")
+    assert_valid(solid)
+    assert rep["trimlines"] == [] and rep["corner_patches"] == []
+    kept = {w: k["reason"] for k in rep["kept_occt_faces"] for w in k["where"].split(", ")}
+    rises = []
+    for n in (top, chamfer_edge):
+        m = re.match(r"the corner patch at .* cannot be replaced: OCCT's plate filling of "
+                     r"its 4-sided hole rises ([0-9.e+-]+) to [0-9.e+-]+ \(.*\) above a plane "
+                     r"face it is tangent to over \d+ trials: it would bump out of the "
+                     r"solid", kept["Block." + n])
+        assert m, kept
+        rises.append(float(m.group(1)))
+    # the corner's own line names the chamfer's top edge, which makes it a corner of
+    # three fillets
+    assert any(re.search(r"with the edge from \(2\.8, (5|11), 14\) to \(2\.8, (11|5), 14\) "
+                         r"selected too, the fillets meet at a corner there instead", k["reason"])
+               for k in rep["kept_occt_faces"] if k["where"].startswith("corner patch at"))
+    monkeypatch.setattr(cn, "MAX_BULGE", math.inf)
+    solid, rep = C2Blend.fillet_report(s, [top, chamfer_edge], radius, label="Block")
+    rise = _assert_set_back(solid, rep, radius, V(2.8, 5 + radius, 14), V(0, 1, 0),
+                            V(1, 0, -1) / math.sqrt(2), V(0, 0, 1), bump=True)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert min((v.Point - V(2.8, 5, 14)).Length for v in solid.Vertexes) > 0.5 * radius
+    assert rise > 0.01 * radius and min(rises) > 0.01 * radius
 
 
 def test_a_pocket_corner_of_a_convex_and_a_concave_fillet_is_set_back(monkeypatch):

@@ -59,6 +59,10 @@ BEZIER = 1.0 / 3.0  # a Bezier leg's length, as a fraction of its chord
 FIRST_LEGS = (BEZIER, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0)
 CLEAR = 0.02
 ON_TOP = 16  # points inside the edge on T tested to lie on T
+# the edge on T, but this fraction of its parameter range at each end (A lies on T's
+# rim), must not meet T's edges: the points tested lie on T where the edge cuts across
+# a corner of it between two of them (_on_top)
+END_SPAN = 0.01
 REACH = 0.5  # the setback is at most this fraction of the edges from P0
 
 
@@ -182,14 +186,21 @@ def _on_top(top, whole, q, d0, a, d1, p0, clear):
     within 0.013 rad and a folded one. Where a hole cuts a pocket's wall
     (shapes.hole_through_pocket_wall, R = 0.15), a third of the chord passed 5e-4
     from V, which the cut then left on T's piece, and that piece was dropped. Raises
-    ValueError when no leg does."""
+    ValueError when no leg does. The edge's inner part (but END_SPAN at each end) must
+    not meet that face's edges either: where T wraps 270 degrees round V (the top of a
+    pocket's end wall over a chamfer, shapes.chamfered_pocket), a leg of 0.7 of the
+    chord cut across V's corner between two of the points tested, off T, and V was left
+    on T's piece."""
     tol = max(e.Tolerance for e in whole.Edges)
     corner = Part.Vertex(min((v.Point for v in whole.Vertexes), key=lambda p: (p - p0).Length))
+    bounds = Part.Compound(whole.Edges)
     for first in FIRST_LEGS:
         edge = _bezier(top, q, d0, a, d1, first)
         t0, t1 = edge.FirstParameter, edge.LastParameter
+        inner = Part.Edge(edge.Curve, t0 + END_SPAN * (t1 - t0), t1 - END_SPAN * (t1 - t0))
         if all(whole.isInside(edge.valueAt(t0 + (t1 - t0) * k / (ON_TOP + 1)), tol, True)
-               for k in range(1, ON_TOP + 1)) and edge.distToShape(corner)[0] >= clear:
+               for k in range(1, ON_TOP + 1)) and edge.distToShape(corner)[0] >= clear \
+                and inner.distToShape(bounds)[0] > tol:
             return edge
     raise ValueError("its edge on the top face leaves that face, or passes its corner, "
                      "whatever its legs")
