@@ -4469,7 +4469,7 @@ def test_a_setback_corner_round_a_corner_of_the_top_is_not_filled_with_a_bump(ra
     The setback's edge on T, from the convex trimline's end to A = P0 + (0, R, 0),
     must go round V, T's corner of 270 degrees, which falls in the hole. With its first
     leg 0.7 of its chord (setback.FIRST_LEGS) it cut across that corner between two of
-    the 16 points tested to lie on T (at R = 0.171 it left T at (2.971, 5, 14) and came
+    the 16 points tested to lie on T (at R = 0.171 it left T at (2.814, 5, 14) and came
     back at (2.8, 5.016, 14)), which left V on T's piece: the cut dropped all of T but
     a sliver, and the sewing left 12 free edges, so both fillets were kept, at every
     radius from 0.05 to 0.45 (and, on machined seed 60's part 5, turned, every fillet
