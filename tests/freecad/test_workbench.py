@@ -4482,20 +4482,24 @@ def test_a_setback_corner_round_a_corner_of_the_top_is_not_filled_with_a_bump(ra
     solid, rep = C2Blend.fillet_report(s, [top, chamfer_edge], radius, label="Block")
     assert_valid(solid)
     assert rep["trimlines"] == [] and rep["corner_patches"] == []
-    kept = {w: k["reason"] for k in rep["kept_occt_faces"] for w in k["where"].split(", ")}
+    # each fillet is named after its own edge (fillet._selected: at R = 0.45 the top
+    # edge, whose own fillet the rim's consumes, went to the chamfer edge's fillet), and
+    # each line names the chamfer's top edge, which makes it a corner of three fillets
+    kept = {k["where"]: k["reason"] for k in rep["kept_occt_faces"]}
+    assert sorted(kept) == sorted(["Block." + top, "Block." + chamfer_edge,
+                                   next(w for w in kept if w.startswith("corner patch at"))])
+    hint = (r"; with the edge from \(2\.8, (5|11), 14\) to \(2\.8, (11|5), 14\) selected "
+            r"too, the fillets meet at a corner there instead \(OCCT's fillet of them "
+            r"succeeds\)$")
     rises = []
     for n in (top, chamfer_edge):
         m = re.match(r"the corner patch at .* cannot be replaced: OCCT's plate filling of "
                      r"its 4-sided hole rises ([0-9.e+-]+) to [0-9.e+-]+ \(.*\) above a plane "
                      r"face it is tangent to over \d+ trials: it would bump out of the "
-                     r"solid", kept["Block." + n])
+                     r"solid" + hint, kept["Block." + n])
         assert m, kept
         rises.append(float(m.group(1)))
-    # the corner's own line names the chamfer's top edge, which makes it a corner of
-    # three fillets
-    assert any(re.search(r"with the edge from \(2\.8, (5|11), 14\) to \(2\.8, (11|5), 14\) "
-                         r"selected too, the fillets meet at a corner there instead", k["reason"])
-               for k in rep["kept_occt_faces"] if k["where"].startswith("corner patch at"))
+    assert all(re.search(hint, r) for r in kept.values())
     monkeypatch.setattr(cn, "MAX_BULGE", math.inf)
     solid, rep = C2Blend.fillet_report(s, [top, chamfer_edge], radius, label="Block")
     rise = _assert_set_back(solid, rep, radius, V(2.8, 5 + radius, 14), V(0, 1, 0),

@@ -55,7 +55,7 @@ from . import setback as sb
 from .knots import side_jump
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, joined, midpoint,
                           new_faces, off_boundary)
-from .surface import angle, frame_at_point
+from .surface import angle, frame_at_point, off_surface
 from . import inputs, solve, recut, assembly, diagnose
 
 # a setback corner (setback.py) left unfilled, its fillets kept for their own reasons
@@ -63,15 +63,37 @@ BETWEEN = ("OCCT's face between a convex and a concave fillet at a vertex whose 
            "edge is not selected, kept with those fillets")
 
 
-def _selected(names, chains_):
-    """{id(chain): [(name, edge)] of the selected edges it fillets}: each edge goes to
-    the chain whose faces are nearest to the edge's midpoint."""
+def _selected(shape, names, chains_):
+    """{id(chain): [(name, edge)] of the selected edges of `shape` it fillets}: each edge
+    goes to the chain whose faces are nearest to the edge's midpoint, of those with a
+    face that touches the surfaces of the edge's two faces (_joins; of all, where none
+    does). Nearest alone, a short edge whose own fillet the next one's consumes went to
+    the other fillet at their vertex: the top edge over a chamfer, at the pocket's end
+    wall, to the fillet between that wall and the chamfer (shapes.chamfered_pocket,
+    R = 0.45), and the rim's fillet was named after none of the selected edges."""
     out = {}
+    tol = 1e-7 * shape.BoundBox.DiagonalLength
     for n, e in names:
         mid = Part.Vertex(midpoint(e))
-        c = min(chains_, key=lambda c: min(f.distToShape(mid)[0] for f in c.faces))
+        faces = ck.edge_faces(shape, e)
+        own = [c for c in chains_ if len(faces) == 2 and _joins(c, faces, tol)] or chains_
+        c = min(own, key=lambda c: min(f.distToShape(mid)[0] for f in c.faces))
         out.setdefault(id(c), []).append((n, e))
     return out
+
+
+def _joins(chain, faces, tol):
+    """Whether a rolling-ball face of `chain` has its two contact edges on the surfaces of
+    the two `faces`, one each (at their midpoints, within tol plus 10 times the edge's
+    tolerance): it fillets an edge between them."""
+    for m in chain.members:
+        if len(m.contacts) != 2:
+            continue
+        near = [(midpoint(c), tol + 10.0 * c.Tolerance) for c, _ in m.contacts]
+        if any(all(off_surface(f.Surface, p) <= t for f, (p, t) in zip(pair, near))
+               for pair in (faces, faces[::-1])):
+            return True
+    return False
 
 
 def _tangent_ends(shape, label, edges):
@@ -297,7 +319,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                 continue
             r.patch, r.corner = True, None
     all_chains, patches = chains(rbfs)
-    selected = _selected(names, all_chains)
+    selected = _selected(shape, names, all_chains)
     for chain in all_chains:
         edges = selected.get(id(chain), [])
         where = ", ".join("%s.%s" % (label, n) for n, _ in edges) or \
