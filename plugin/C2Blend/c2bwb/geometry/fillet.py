@@ -55,7 +55,7 @@ from . import setback as sb
 from .knots import side_jump
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, joined, midpoint,
                           new_faces, off_boundary)
-from .surface import angle, frame_at_point, off_surface
+from .surface import angle, frame_at_point
 from . import inputs, solve, recut, assembly, diagnose
 
 # a setback corner (setback.py) left unfilled, its fillets kept for their own reasons
@@ -84,14 +84,11 @@ def _selected(shape, names, chains_):
 
 def _joins(chain, faces, tol):
     """Whether a rolling-ball face of `chain` has its two contact edges on the surfaces of
-    the two `faces`, one each (at their midpoints, within tol plus 10 times the edge's
-    tolerance): it fillets an edge between them."""
+    the two `faces`, one each (recut.face_under): it fillets an edge between them."""
     for m in chain.members:
-        if len(m.contacts) != 2:
-            continue
-        near = [(midpoint(c), tol + 10.0 * c.Tolerance) for c, _ in m.contacts]
-        if any(all(off_surface(f.Surface, p) <= t for f, (p, t) in zip(pair, near))
-               for pair in (faces, faces[::-1])):
+        under = [recut.face_under(c, faces, tol) for c, _ in m.contacts]
+        if len(under) == 2 and all(u is not None for u in under) and \
+                not under[0].isSame(under[1]):
             return True
     return False
 
