@@ -106,9 +106,10 @@ def chain_ends(chain, fillet_faces, radius):
         end = nearest(edge)
         end.corner = True
         if patch.setback is not None:  # cut along its slanted end, or exact
-            if any(f.isSame(patch.setback.concave) for f in chain.faces):
-                end.slant = patch.setback.slant
-                end.tool = _slant_tool(end.slant, patch.setback.concave, radius)
+            for face, slant in patch.setback.slants:
+                if any(face.isSame(f) for f in chain.faces) and \
+                        any(edge.isSame(e) for e in face.Edges):
+                    end.slant, end.tool = slant, _slant_tool(slant, face, radius)
             continue
         m, t = guide[end.at]
         off = max(abs((p - m).dot(t)) for p in edge.discretize(9)) / t.Length

@@ -29,7 +29,9 @@
    measured and reported, never claimed G2. Where a convex and a concave fillet meet at a
    vertex whose third edge is not selected, OCCT's face between them vanishes at a point;
    that corner is set back along the third edge and filled likewise, meeting the face on
-   the third edge's other side at an angle (setback.py).
+   the third edge's other side at an angle (setback.py). Where fillets follow an edge
+   that curves tighter than their radius, OCCT ends them at a mitre with a face between
+   them; both are set back from it and the corner is filled, tangent all round (turn.py).
 7. Everything is sewn into a solid and checked by BRepCheck and OCCT's BOP check
    (assembly.py), and the continuity is measured along every trimline, mitre, junction
    and corner filling (here, with check.py).
@@ -52,15 +54,12 @@ from . import corners as cn
 from . import ends
 from . import solids as sl
 from . import setback as sb
+from . import turn as tn
 from .knots import side_jump
 from .rollingball import (TANGENT_ANGLE, RollingBallFace, chains, joined, midpoint,
                           new_faces, off_boundary)
 from .surface import angle, frame_at_point
 from . import inputs, solve, recut, assembly, diagnose
-
-# a setback corner (setback.py) left unfilled, its fillets kept for their own reasons
-BETWEEN = ("OCCT's face between a convex and a concave fillet at a vertex whose third "
-           "edge is not selected, kept with those fillets")
 
 
 def _selected(shape, names, chains_):
@@ -305,16 +304,25 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
                            where_all, "radius")
     blended, kept = [], []
     rbfs = [RollingBallFace(result, f, fillet_faces) for f in fillet_faces]
-    for r in rbfs:  # OCCT's face between a convex and a concave fillet: set back
-        if r.between:
-            try:
-                r.setback = sb.Setback(result, r.face, fillet_faces, radius,
-                                       lambda f: recut.original_face(shape, f))
-            except (ValueError, Part.OCCError) as ex:
-                r.corner += " (it cannot be set back: %s)%s" % (
-                    ex, diagnose.tight_arc(shape, result, r.face, radius))
+
+    def original(f):  # the face of the input that a face f of OCCT's result lies on
+        return recut.original_face(shape, f)
+    for r in rbfs:  # OCCT's face between two fillets at a vertex: set back
+        if not r.between:
+            continue
+        try:
+            r.setback = sb.Setback(result, r.face, fillet_faces, radius, original)
+        except (ValueError, Part.OCCError) as ex:
+            r.corner += " (it cannot be set back: %s)" % ex
+            arc = diagnose.tight_arc(shape, result, r.face, radius)
+            if not arc:
                 continue
-            r.patch, r.corner = True, None
+            try:  # fillets following an edge that curves tighter than their radius
+                r.setback = tn.Turn(result, r.face, rbfs, radius, original, arc)
+            except (ValueError, Part.OCCError) as ex:
+                r.corner += arc + " (nor beyond that edge: %s)" % ex
+                continue
+        r.patch, r.corner = True, None
     all_chains, patches = chains(rbfs)
     selected = _selected(shape, names, all_chains)
     for chain in all_chains:
@@ -384,7 +392,8 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
         if not any(r is x for q in filled for x in q.rbfs for r in p.rbfs):
             kept.append({"where": p.where(), "reason": "OCCT's corner patch, kept with the "
                          "fillets that meet there" if p.setback is None else
-                         BETWEEN + diagnose.vertex_hint(shape, names, p.faces[0], radius)})
+                         p.setback.kept + diagnose.vertex_hint(shape, names, p.faces[0],
+                                                               radius)})
     report = {
         "continuity": continuity, "radius": radius, "shape_params": list(shape_params),
         "tension": tension,

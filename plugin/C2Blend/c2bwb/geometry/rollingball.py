@@ -142,7 +142,7 @@ class RollingBallFace:
         self.contacts, self.ends, self.links, self.corners = [], [], [], []
         self.corner = None
         self.between = False
-        self.setback = None  # setback.Setback, where fillet.py makes this a patch
+        self.setback = None  # setback.Setback or turn.Turn: fillet.py makes this a patch
         met = 0  # fillets met at an angle
         for e in _unique_edges(face):
             nbrs = [f for f in result.ancestorsOfType(e, Part.Face) if not f.isSame(face)]
@@ -216,17 +216,18 @@ class RollingBallFace:
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
         lies, or None when it lies inside the range. On a periodic along-parameter the
         projection may return the end a period away (0 for 2 pi); _snap folds it back."""
-        a = self._along(midpoint(edge))
+        a = self.along_of(midpoint(edge))
         return a if a in self.range else None
 
-    def _along(self, p):
+    def along_of(self, p):
+        """The along-parameter of the face's point nearest to p, within range."""
         s = self.face.Surface
         return _snap(s.parameter(p)[self.along], *self.range, _period(s, self.along))
 
     def oblique(self, edge):
         """True when the link `edge` starts at an end of the along-range but does not
         stay there: OCCT split the fillet across it at an angle."""
-        return sum(self._along(v.Point) in self.range for v in edge.Vertexes) == 1
+        return sum(self.along_of(v.Point) in self.range for v in edge.Vertexes) == 1
 
 
 class Section:
@@ -384,8 +385,10 @@ class CornerPatch:
         self.tools = self.setback.tools if self.setback else \
             [e for e in own if sum(e.isSame(x) for x in own) == 1]
         self.region = Part.Compound(self.faces + (self.tools if self.setback else []))
-        self.creases = [self.setback.crease] if self.setback else \
-            [e for r in rbfs for e, _ in r.ends]
+        if self.setback:  # (turn.Turn's filling has no crease)
+            self.creases = [c for c in [self.setback.crease] if c is not None]
+        else:
+            self.creases = [e for r in rbfs for e, _ in r.ends]
         self.guide = self.faces[0] if len(self.faces) == 1 and not self.setback else None
 
     def where(self):

@@ -28,7 +28,7 @@ one (shapes.boss_on_boss), the lower top's rim fillet (convex) vanishes at P0 an
 cut, the fillet along the taller boss (concave) ends exact, T is the taller boss's
 side, W the lower one's, and W's rim the concave edge where they meet. Q then lies
 beyond that rim, and the edge on T goes round the rim's end above the lower top
-before it comes down to A, its first leg as long as that takes (_on_top).
+before it comes down to A, its first leg as long as that takes (on_top).
 
 The filling is an approximation, measured and reported like a corner's, never G2: on
 the ten mixed-convexity vertices of the fillet surveys (tools/fillet_survey.py
@@ -52,7 +52,7 @@ Vector2d = FreeCAD.Base.Vector2d
 BEZIER = 1.0 / 3.0  # a Bezier leg's length, as a fraction of its chord
 # the first leg of the edge on T, as a fraction of its chord, each tried in turn until
 # the edge lies on the original T and passes CLEAR radii or more from its vertex
-# nearest to P0 (_on_top). On shapes.hole_through_pocket_wall a third of the chord
+# nearest to P0 (on_top). On shapes.hole_through_pocket_wall a third of the chord
 # passes it by 0.003, 0.009 and 0.015 R at R = 0.15, 0.2 and 0.1 (at 0.15 the cut left
 # it on T's piece kept); the legs taken on the survey's parts pass it by 0.024 R and
 # more.
@@ -61,9 +61,12 @@ CLEAR = 0.02
 ON_TOP = 16  # points inside the edge on T tested to lie on T
 # the edge on T, but this fraction of its parameter range at each end (A lies on T's
 # rim), must not meet T's edges: the points tested lie on T where the edge cuts across
-# a corner of it between two of them (_on_top)
+# a corner of it between two of them (on_top)
 END_SPAN = 0.01
 REACH = 0.5  # the setback is at most this fraction of the edges from P0
+# the reason for keeping the fillets of a setback corner left unfilled
+KEPT = ("OCCT's face between a convex and a concave fillet at a vertex whose third edge "
+        "is not selected, kept with those fillets")
 
 
 class Setback:
@@ -73,9 +76,10 @@ class Setback:
     that a face f of `result` lies on).
 
     Attributes: tools, the edges on T and W that bound the faces anew; crease, the
-    edge on W (the filling meets W there at an angle); slant, the concave fillet's end
-    edge (C to B, on its rolling-ball face), by which its blend is cut; concave, that
-    rolling-ball face. Raises ValueError, saying why, where OCCT's face is not such a
+    edge on W (the filling meets W there at an angle); slants, [(the concave fillet's
+    rolling-ball face, its end edge C to B, by which its blend is cut)] (the convex
+    fillet ends exact); kept, the reason its fillets are kept when the corner is not
+    filled. Raises ValueError, saying why, where OCCT's face is not such a
     corner (its edges are not one on a face, one on each fillet and at most one
     degenerate) or the setback edges cannot be made."""
 
@@ -121,12 +125,12 @@ class Setback:
                 top.distToShape(Part.Vertex(a - across * eps))[0]:
             across = -across
         v_out = -leaving(_trimline_at(result, v_face, top, q), q)  # on past Q
-        self.tools = [_on_top(top, original(top), q, v_out, a, across, pinch.Point,
+        self.tools = [on_top(top, original(top), q, v_out, a, across, pinch.Point,
                               CLEAR * radius),
-                      _bezier(wall, a, -rim_out, b, trim_out)]
+                      bezier(wall, a, -rim_out, b, trim_out)]
         self.crease = self.tools[1]
-        self.slant = _bezier(c_face, c, None, b, None)
-        self.concave = c_face
+        self.slants = [(c_face, bezier(c_face, c, None, b, None))]
+        self.kept = KEPT
 
 
 def _has(edge, vertex):
@@ -171,9 +175,9 @@ def _trimline_at(result, fillet, top, q):
     raise ValueError("the convex fillet has no edge on the top face at its end")
 
 
-def _on_top(top, whole, q, d0, a, d1, p0, clear):
+def on_top(top, whole, q, d0, a, d1, p0, clear, legs=None):
     """The edge on T (`top`, OCCT's face; `whole`, the original solid's, which is cut
-    along it) from Q to A (_bezier, leaving Q along d0 and arriving at A along d1), its
+    along it) from Q to A (bezier, leaving Q along d0 and arriving at A along d1), its
     first leg the shortest of FIRST_LEGS for which it lies on the original face and
     passes `clear` (model units) or more from that face's vertex V nearest to P0
     (`p0`), where the edges the fillets consume end: V must lie in the hole, not on
@@ -190,12 +194,13 @@ def _on_top(top, whole, q, d0, a, d1, p0, clear):
     not meet that face's edges either: where T wraps 270 degrees round V (the top of a
     pocket's end wall over a chamfer, shapes.chamfered_pocket), a leg of 0.7 of the
     chord cut across V's corner between two of the points tested, off T, and V was left
-    on T's piece."""
+    on T's piece. `legs`, when given, are the (first, last) legs (fractions of the
+    chord) to try in place of FIRST_LEGS (each with a last leg of BEZIER)."""
     tol = max(e.Tolerance for e in whole.Edges)
     corner = Part.Vertex(min((v.Point for v in whole.Vertexes), key=lambda p: (p - p0).Length))
     bounds = Part.Compound(whole.Edges)
-    for first in FIRST_LEGS:
-        edge = _bezier(top, q, d0, a, d1, first)
+    for first, last in legs or [(f, BEZIER) for f in FIRST_LEGS]:
+        edge = bezier(top, q, d0, a, d1, first, last)
         t0, t1 = edge.FirstParameter, edge.LastParameter
         inner = Part.Edge(edge.Curve, t0 + END_SPAN * (t1 - t0), t1 - END_SPAN * (t1 - t0))
         if all(whole.isInside(edge.valueAt(t0 + (t1 - t0) * k / (ON_TOP + 1)), tol, True)
@@ -206,9 +211,9 @@ def _on_top(top, whole, q, d0, a, d1, p0, clear):
                      "whatever its legs")
 
 
-def _bezier(face, p0, d0, p1, d1, first=BEZIER):
+def bezier(face, p0, d0, p1, d1, first=BEZIER, last=BEZIER):
     """An edge on face's surface from point p0 to p1 (on it): a cubic Bezier curve in its
-    parameters whose legs, `first` and BEZIER times the chord long, leave p0 along d0
+    parameters whose legs, `first` and `last` times the chord long, leave p0 along d0
     and arrive at p1 along d1 (unit 3D tangent vectors, or None: along the chord in the
     parameters, the short way round a periodic surface). Raises ValueError when it
     misses p0 or p1."""
@@ -227,7 +232,7 @@ def _bezier(face, p0, d0, p1, d1, first=BEZIER):
         du, dv = frame.coords(d)
         return Vector2d(du, dv) * (fraction * chord)
     curve = Part.Geom2d.BezierCurve2d()
-    curve.setPoles([uv0, uv0 + step(f0, d0, first), uv1 - step(f1, d1, BEZIER), uv1])
+    curve.setPoles([uv0, uv0 + step(f0, d0, first), uv1 - step(f1, d1, last), uv1])
     edge = curve.toShape(surface)
     ends = [edge.valueAt(edge.FirstParameter), edge.valueAt(edge.LastParameter)]
     if (ends[0] - p0).Length + (ends[1] - p1).Length > 1e-6 * (1.0 + BEZIER * chord):
