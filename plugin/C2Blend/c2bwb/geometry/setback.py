@@ -195,7 +195,7 @@ def on_top(top, whole, q, d0, a, d1, p0, clear, legs=None):
     pocket's end wall over a chamfer, shapes.chamfered_pocket), a leg of 0.7 of the
     chord cut across V's corner between two of the points tested, off T, and V was left
     on T's piece. `legs`, when given, are the (first, last) legs (fractions of the
-    chord) to try in place of FIRST_LEGS (each with a last leg of BEZIER)."""
+    chord) tried in place of FIRST_LEGS' first legs, each with a last leg of BEZIER."""
     tol = max(e.Tolerance for e in whole.Edges)
     corner = Part.Vertex(min((v.Point for v in whole.Vertexes), key=lambda p: (p - p0).Length))
     bounds = Part.Compound(whole.Edges)

@@ -55,7 +55,7 @@ class Turn:
 
     Attributes (as setback.Setback's): tools, the edges bounding the faces around the
     hole anew; crease, None (the filling is tangent all round); slants, [(rolling-ball
-    face, its section where its blend is cut)]; kept, the reason its fillets are kept
+    face, the edge along which its blend is cut)]; kept, the reason its fillets are kept
     when the corner is not filled, ending with `arc` (diagnose.tight_arc's words).
     Raises ValueError, saying why, where OCCT's face does not meet exactly two fillets
     replaced by blends that touch one face in common, or the edges cannot be made."""
@@ -81,6 +81,8 @@ class Turn:
         pinch = min((v.Point for v in face.Vertexes),
                     key=lambda p: (p - qa).Length + (p - qb).Length)
         chord = (qb - qa).Length
+        if chord <= 1e-9 * radius:
+            raise ValueError("its fillets' cuts reach the face they share at one point")
         legs = [((pinch - qa).Length / chord, (pinch - qb).Length / chord)]
         self.tools = [sb.on_top(top, original(top), qa, da, qb, -db, pinch,
                                  sb.CLEAR * radius, legs)] + [e for e, _ in others]
@@ -93,9 +95,9 @@ def _cut(rbf, mitre, top, radius):
     """(the edge along which the blend replacing the rolling-ball face `rbf` is cut, its
     end Q on `top`, the unit tangent there of the trimline on top pointing toward
     OCCT's `mitre` edge on the face). The edge runs on the face from the mitre's end P
-    on the other face (the wall) to
-    Q, SETBACK radii (at most REACH of the trimline on top) beyond the mitre's end on
-    top, leaving P and reaching Q across the fillet."""
+    on the other face (the wall) to Q, SETBACK radii (at most REACH of the trimline on
+    top) beyond the mitre's end on top, leaving P and reaching Q across the fillet.
+    Raises ValueError where the fillet has no length or width there."""
     lo, hi = rbf.range
     at = [rbf.along_of(v.Point) for v in mitre.Vertexes]
     near_lo = abs(sum(at) / len(at) - lo) < abs(hi - sum(at) / len(at))
@@ -110,14 +112,20 @@ def _cut(rbf, mitre, top, radius):
     e_top = next(e for (e, f) in rbf.contacts if f.isSame(top))
     a_end = (max if near_lo else min)(rbf.along_of(v.Point) for v in e_top.Vertexes)
     speed = rbf.derivative(a_top, c_top, True).Length
+    if speed <= 0.0:
+        raise ValueError("a fillet's surface has no length along its trimline there")
     step = min(SETBACK * radius / speed, REACH * abs(a_end - a_top))
     a_q = a_top + step if near_lo else a_top - step
     q = rbf.point(a_q, c_top)
     sign = 1.0 if c_top > c_wall else -1.0
     leave, arrive = [rbf.derivative(a, c, False) * sign for a, c in ((a_p, c_wall), (a_q, c_top))]
+    if min(leave.Length, arrive.Length) <= 0.0:
+        raise ValueError("a fillet's surface has no width across at its cut")
     leave.normalize()
     arrive.normalize()
     cut = sb.bezier(rbf.face, p, leave, q, arrive)
     d = rbf.derivative(a_q, c_top, True)
+    if d.Length <= 0.0:
+        raise ValueError("a fillet's surface has no length along its trimline there")
     d.normalize()
     return cut, q, d * (-1.0 if near_lo else 1.0)
