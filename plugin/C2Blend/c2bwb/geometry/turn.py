@@ -29,7 +29,7 @@ Q, and the plates turned by up to 9.8e-3 rad. The hole is then bounded by:
 The filling is tangent to the faces all round, with no crease. With legs of a third
 of the chord (as setback.py's first try), every plate rose about 4e-3 above T, where
 T's edge turns sharply near the pinch; with a first leg of 0.1 or 0.2 of the chord,
-0.03 or 0.014. With the legs reaching the pinch, no plate rises above T, and the box's
+0.03 or 0.014. With the legs reaching the pinch, the plates stay below T, and the box's
 four corners turn from the faces by 3.5e-5 to 3.0e-4 rad (setbacks of 0.5 to 1.5 R
 alike). The setback is at most REACH of the trimline on T, so that a fillet along a
 short wall between two such corners keeps a part (a pocket's 1.3 wall at R = 1.229,
