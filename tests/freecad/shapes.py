@@ -1195,6 +1195,17 @@ def pocket_with_rounded_corners():
     return s, _edges_at(s, 5)
 
 
+def small_pocket_with_rounded_corners():
+    """A 12 x 12 x 6 block with a 4.4 x 3.8 pocket 2.7 deep, its vertical corners rounded
+    at r = 1.136 (the floor's straight edges 2.128 and 1.528 long), as the pocket of
+    tools/fillet_survey.py --random-plates 40 --seed 64, part 14; and the names of the
+    pocket floor's 8 edges, one tangent chain."""
+    tool = Part.makeBox(4.4, 3.8, 4, V(4, 4, 3.3))
+    tool = tool.makeFillet(1.136, [e for e in tool.Edges if e.BoundBox.ZLength > 1])
+    s = Part.makeBox(12, 12, 6).cut(tool).removeSplitter().Solids[0]
+    return s, _edges_at(s, 3.3)
+
+
 def three_slots():
     """A 39.24 x 39.62 x 9.757 block with three slots of rounded ends (half-widths 3.547,
     3.569 and 0.7777; the rounded ends of the first two overlap), to full precision

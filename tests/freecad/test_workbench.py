@@ -823,6 +823,27 @@ def test_a_radius_past_an_arc_is_set_back_and_its_corner_filled(case):
     assert (ours > 0) == (case == "concave") and ours == pytest.approx(occt, rel=0.15)
 
 
+def test_a_short_wall_between_two_corners_past_their_arcs_keeps_part_of_its_blend():
+    """A pocket's floor filleted at R = 1.229 past its corners' arcs (r = 1.136), whose
+    straight edges between them are 2.128 and 1.528 long (shapes.small_pocket_with_
+    rounded_corners, the pocket of tools/fillet_survey.py --random-plates 40 --seed 64,
+    part 14). Each wall's blend is set back at both its ends; with setbacks of up to
+    half the fillet, the two cuts of the short wall's blend crossed, the holes did not
+    close ("the 4 edges around the hole do not form one loop") and every fillet was
+    kept. A setback takes at most a third of the trimline on the floor (turn.REACH):
+    every trimline G2, 4 corners filled within 1e-3 rad (measured 8.3e-5 to 1.1e-4),
+    each above the floor (z = 3.3), nothing kept."""
+    s, edges = shapes.small_pocket_with_rounded_corners()
+    solid, rep = C2Blend.fillet_report(s, edges[:1], 1.229, label="Part")
+    assert_valid(solid)
+    assert not rep["kept_occt_faces"] and len(rep["corner_patches"]) == 4
+    for t in rep["trimlines"]:
+        assert t["verdict"] == "G2" and t["g1"] < 1e-8 and t["g2_rel"] < 1e-6, t
+    for c in rep["corner_patches"]:
+        assert c["edges"] == 4 and c["g0"] < 1e-4 and c["g1"] < 1e-3, c
+        assert min(p.z for p in solid.getElement(c["face"]).tessellate(0.01)[0]) > 3.3 - 1e-7
+
+
 @pytest.mark.parametrize("case", ["convex", "concave", "beside a boss"])
 def test_a_radius_past_an_arc_s_is_named_where_its_corner_is_not_filled(
         case, monkeypatch):
