@@ -793,7 +793,8 @@ def test_a_radius_past_an_arc_is_set_back_and_its_corner_filled(case):
     with all the fillets around it (tools/fillet_survey.py --random-plates 40 --seed
     64: 6 of 40 plates). The blends are now set back from the mitre (turn.py) and the
     hole is filled, tangent all round: every trimline G2, each corner's plate seams
-    within 1e-4 and 1e-3 rad (measured: 1.6e-5 and 3.4e-4 at worst), nothing kept. Convex:
+    within 1e-4 in position and 1e-3 rad in normal (measured: 1.6e-5 and 3.4e-4 at
+    worst), nothing kept. Convex:
     the top outline of shapes.box_rounded_but_one_corner (arcs of r = 3) at R = 4.5
     (and at R = 3.5 beside a boss of radius 0.5 on the top at (13, 13)); concave: the
     floor of shapes.pocket_with_rounded_corners (arcs of r = 1) at R = 1.5. Physical
