@@ -328,11 +328,15 @@ def _planes(shell, tangent, edges):
 def _bulge(face, planes):
     """How far (model units, 0 if not at all) a filling `face` rises beyond the planes
     (_planes) it should stay behind, at the points of a BULGE_GRID x BULGE_GRID grid
-    of its parameters that lie on it."""
+    of its parameters that lie on it. Only the points that rise are tested to lie on
+    the face, highest first (the test costs far more than the point: 0.37 s a filling
+    for the whole grid)."""
     if not planes:
         return 0.0
     u0, u1, v0, v1 = face.ParameterRange
     grid = [(u0 + (u1 - u0) * i / BULGE_GRID, v0 + (v1 - v0) * j / BULGE_GRID)
             for i in range(BULGE_GRID + 1) for j in range(BULGE_GRID + 1)]
-    points = [face.Surface.value(u, v) for u, v in grid if face.isPartOfDomain(u, v)]
-    return max([0.0] + [(q - p).dot(n) for p, n in planes for q in points])
+    rises = sorted(((max((face.Surface.value(u, v) - p).dot(n) for p, n in planes), u, v)
+                    for u, v in grid), reverse=True)
+    return next((max(h, 0.0) for h, u, v in rises if h <= 0.0 or face.isPartOfDomain(u, v)),
+                0.0)
