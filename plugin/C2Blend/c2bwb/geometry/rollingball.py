@@ -385,10 +385,8 @@ class CornerPatch:
         self.tools = self.setback.tools if self.setback else \
             [e for e in own if sum(e.isSame(x) for x in own) == 1]
         self.region = Part.Compound(self.faces + (self.tools if self.setback else []))
-        if self.setback:  # (turn.Turn's filling has no crease)
-            self.creases = [c for c in [self.setback.crease] if c is not None]
-        else:
-            self.creases = [e for r in rbfs for e, _ in r.ends]
+        self.creases = self.setback.creases if self.setback else \
+            [e for r in rbfs for e, _ in r.ends]
         self.guide = self.faces[0] if len(self.faces) == 1 and not self.setback else None
 
     def where(self):

@@ -75,8 +75,8 @@ class Setback:
     fillet_faces: its rolling-ball faces; original(f): the face of the original solid
     that a face f of `result` lies on).
 
-    Attributes: tools, the edges on T and W that bound the faces anew; crease, the
-    edge on W (the filling meets W there at an angle); slants, [(the concave fillet's
+    Attributes: tools, the edges on T and W that bound the faces anew; creases, [the
+    edge on W] (the filling meets W there at an angle); slants, [(the concave fillet's
     rolling-ball face, its end edge C to B, by which its blend is cut)] (the convex
     fillet ends exact); kept, the reason its fillets are kept when the corner is not
     filled. Raises ValueError, saying why, where OCCT's face is not such a
@@ -128,7 +128,7 @@ class Setback:
         self.tools = [on_top(top, original(top), q, v_out, a, across, pinch.Point,
                               CLEAR * radius),
                       bezier(wall, a, -rim_out, b, trim_out)]
-        self.crease = self.tools[1]
+        self.creases = [self.tools[1]]
         self.slants = [(c_face, bezier(c_face, c, None, b, None))]
         self.kept = KEPT
 

@@ -54,7 +54,7 @@ class Turn:
     an edge curving tighter than the radius.
 
     Attributes (as setback.Setback's): tools, the edges bounding the faces around the
-    hole anew; crease, None (the filling is tangent all round); slants, [(rolling-ball
+    hole anew; creases, [] (the filling is tangent all round); slants, [(rolling-ball
     face, the edge along which its blend is cut)]; kept, the reason its fillets are kept
     when the corner is not filled, ending with `arc` (diagnose.tight_arc's words).
     Raises ValueError, saying why, where OCCT's face does not meet exactly two fillets
@@ -86,7 +86,7 @@ class Turn:
         legs = [((pinch - qa).Length / chord, (pinch - qb).Length / chord)]
         self.tools = [sb.on_top(top, original(top), qa, da, qb, -db, pinch,
                                  sb.CLEAR * radius, legs)] + [e for e, _ in others]
-        self.crease = None
+        self.creases = []
         self.slants = [(a.face, sa), (b.face, sb_)]
         self.kept = KEPT + arc
 
@@ -99,15 +99,13 @@ def _cut(rbf, mitre, top, radius):
     top) beyond the mitre's end on top, leaving P and reaching Q across the fillet.
     Raises ValueError where the fillet has no length or width there."""
     lo, hi = rbf.range
-    at = [rbf.along_of(v.Point) for v in mitre.Vertexes]
-    near_lo = abs(sum(at) / len(at) - lo) < abs(hi - sum(at) / len(at))
+    at = [(rbf.along_of(v.Point), v.Point) for v in mitre.Vertexes]
+    mid = sum(a for a, _ in at) / len(at)
+    near_lo = abs(mid - lo) < abs(hi - mid)
     (c_top, c_wall) = [c for _, c in sorted(
         zip(rbf.contacts, rbf.across), key=lambda x: not x[0][1].isSame(top))]
     # the mitre's ends: P on the wall, and the one on top
-    ends = sorted(mitre.Vertexes, key=lambda v: (rbf.point(rbf.along_of(v.Point), c_wall)
-                                                  - v.Point).Length)
-    p, a_p = ends[0].Point, rbf.along_of(ends[0].Point)
-    a_top = rbf.along_of(ends[1].Point)
+    (a_p, p), (a_top, _) = sorted(at, key=lambda x: (rbf.point(x[0], c_wall) - x[1]).Length)
     # the trimline on top runs from a_top to its other end, a_end
     e_top = next(e for (e, f) in rbf.contacts if f.isSame(top))
     a_end = (max if near_lo else min)(rbf.along_of(v.Point) for v in e_top.Vertexes)
