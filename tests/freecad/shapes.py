@@ -1206,6 +1206,15 @@ def small_pocket_with_rounded_corners():
     return s, _edges_at(s, 3.3)
 
 
+def open_pocket():
+    """A 20 x 20 x 10 block with a 10 x 10 pocket 6 deep, x and y from 5 to 15; and the
+    name of the pocket's rim edge at x = 5, between the top and the wall x = 5, whose
+    ends meet the walls y = 5 and y = 15 at concave corners."""
+    s = Part.makeBox(20, 20, 10).cut(Part.makeBox(10, 10, 6, V(5, 5, 4))).removeSplitter()
+    return s, _edge_named(s, lambda e: e.BoundBox.ZMin > 10 - 1e-9
+                          and e.BoundBox.XLength < 1e-9 and abs(e.BoundBox.XMin - 5) < 1e-9)
+
+
 def three_slots():
     """A 39.24 x 39.62 x 9.757 block with three slots of rounded ends (half-widths 3.547,
     3.569 and 0.7777; the rounded ends of the first two overlap), to full precision

@@ -845,6 +845,35 @@ def test_a_short_wall_between_two_corners_past_their_arcs_keeps_part_of_its_blen
         assert min(p.z for p in solid.getElement(c["face"]).tessellate(0.01)[0]) > 3.3 - 1e-7
 
 
+@pytest.mark.parametrize("radius", [1.0, 1.5, 2.5])
+def test_a_rim_fillet_ending_in_the_pocket_s_walls_is_a_blend(radius):
+    """The rim edge at x = 5 of a pocket (shapes.open_pocket) ends in the pocket's walls
+    y = 5 and y = 15: OCCT cuts the fillet's end section out of each wall, below the
+    old top, and keeps the wall's plane. Such a wall was taken for a face OCCT made
+    wherever a point of rollingball.interior_points' grid fell in that cut (R = 1.5:
+    "it has 0 tangent contact edges instead of 2"), and the fillet was kept. It is the
+    wall, extended (rollingball._extends): a G2 blend, nothing kept, no corner. Each
+    wall stays one plane face and gains the blend's end section, whose area A is the
+    removed volume over the edge's length 10 (both walls alike, to 1e-6), and lies
+    between 0 and the triangle of the corner and the trimlines, R^2 / 2 (the blend is
+    convex, tangent to both planes)."""
+    s, rim = shapes.open_pocket()
+    solid, rep = C2Blend.fillet_report(s, [rim], radius, label="Part")
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert not rep["kept_occt_faces"] and not rep["corner_patches"] and rep["blends"]
+    for t in rep["trimlines"]:
+        assert t["verdict"] == "G2" and t["g1"] < 1e-8 and t["g2_rel"] < 1e-6, t
+    section = (s.Volume - solid.Volume) / 10.0
+    assert 0 < section < radius ** 2 / 2
+    for y in (5.0, 15.0):
+        walls = [f for f in solid.Faces if isinstance(f.Surface, Part.Plane)
+                 and f.BoundBox.YLength < 1e-9 and abs(f.BoundBox.YMin - y) < 1e-9]
+        assert len(walls) == 1
+        assert walls[0].Area - 60.0 == pytest.approx(section, rel=1e-6)
+        assert walls[0].BoundBox.XMin == pytest.approx(5 - radius, abs=1e-7)
+
+
 @pytest.mark.parametrize("case", ["convex", "concave", "beside a boss"])
 def test_a_radius_past_an_arc_s_is_named_where_its_corner_is_not_filled(
         case, monkeypatch):

@@ -61,11 +61,27 @@ def new_faces(original, result):
             continue
         tol = off_boundary(f)
         inside = interior_points(f)
-        if any(boundary.distToShape(Part.Vertex(p))[0] > tol
-               and all(domain_distance(g, p) > tol for g in winding) for p in inside) \
-                or not any(on_surface(g, inside) for g in original.Faces):
+        off = any(boundary.distToShape(Part.Vertex(p))[0] > tol
+                  and all(domain_distance(g, p) > tol for g in winding) for p in inside)
+        if off and any(_extends(g, inside, tol) for g in original.Faces):
+            continue
+        if off or not any(on_surface(g, inside) for g in original.Faces):
             out.append(f)
     return out
+
+
+def _extends(face, points, tol):
+    """True when `points` (inside a face of OCCT's result) all lie on face's surface and
+    one of them on face itself (within tol): that face of the result is an original one
+    trimmed and extended, as a pocket's wall where a fillet of the rim's edge beside it
+    ends in that wall (its end section cut out of the wall, below the old top)."""
+    def on(p):
+        return off_surface(face.Surface, p) <= ON_SURFACE * (1.0 + max(map(abs, p)))
+    try:
+        return any(face.distToShape(Part.Vertex(p))[0] <= tol for p in points) \
+            and all(on(p) for p in points)
+    except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
+        return False
 
 
 def on_surface(face, points):
