@@ -14,12 +14,15 @@ processor and clock time of OCCT's BOP check on a filleted pentagonal prism and 
 plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only
 TEXT, the handful of typical parts is cut down to those whose name contains TEXT (to
 time them). With --turned, each random part is turned and moved to a random placement
-first.
+first. With --sweep R1,R2,..., every edge alone of nine plain parts (pockets, a step,
+brackets, slots, ribs) at each radius; with --pairs too, every two edges that meet at
+a vertex.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]
        [--random N | --random-edges N | --random-machined N | --random-shafts N |
-        --random-plates N [--seed S] [--turned]]
+        --random-plates N [--seed S] [--turned] |
+        --sweep R1,R2,... [--pairs]]
        [--bop-times]
 """
 import argparse
@@ -501,29 +504,76 @@ def random_survey(count, seed, make=random_part):
         if len(s.Solids) != 1 or not edges:
             outcome = "skipped (no single solid, or no edge)"
         else:
-            try:
-                t0 = time.perf_counter()
-                solid, rep = C2Blend.fillet_report(s, edges, r)
-                seconds = time.perf_counter() - t0
-                kept = [x for x in rep["kept_occt_faces"] if not x["where"].startswith(
-                    "corner patch")]
-                ok = all(t["verdict"] == "G2" for t in rep["trimlines"]) and not kept and \
-                    solid.isValid() and rep["solid_check"] == "passes BRepCheck and the BOP check"
-                outcome = ("G2 at every trimline, nothing kept as OCCT's, valid, passes the "
-                           "BOP check" if ok else "other")
-                corners = rep["corner_patches"]
-                seam = " (%d corners filled, seams within %.1e rad)" % (
-                    len(corners), max(c["g1"] for c in corners)) if corners else ""
-                if not ok or seconds > 10:
-                    print("%d %s, %d edge(s), R=%g: %s%s, %s, %.1f s; %s"
-                          % (k, kind, len(edges), r, rep["verdict"], seam, rep["solid_check"],
-                             seconds, "; ".join(sorted({x["reason"] for x in kept}))))
-            except C2Blend.Error as ex:
-                outcome = "error"
-                print("%d %s, %d edge(s), R=%g: error: %s" % (k, kind, len(edges), r, ex))
+            outcome = tried("%d %s" % (k, kind), s, edges, r)
         totals[outcome] = totals.get(outcome, 0) + 1
+    print_totals(totals)
+
+
+GOOD = "G2 at every trimline, nothing kept as OCCT's, valid, passes the BOP check"
+
+
+def tried(what, s, edges, r):
+    """The outcome of C2 Fillet of `edges` of s at radius r: GOOD, "other" or "error";
+    prints a line saying what, unless GOOD within 10 s."""
+    try:
+        t0 = time.perf_counter()
+        solid, rep = C2Blend.fillet_report(s, edges, r)
+        seconds = time.perf_counter() - t0
+    except C2Blend.Error as ex:
+        print("%s, %d edge(s), R=%g: error: %s" % (what, len(edges), r, ex))
+        return "error"
+    kept = [x for x in rep["kept_occt_faces"] if not x["where"].startswith("corner patch")]
+    ok = all(t["verdict"] == "G2" for t in rep["trimlines"]) and not kept and \
+        solid.isValid() and rep["solid_check"] == "passes BRepCheck and the BOP check"
+    corners = rep["corner_patches"]
+    seam = " (%d corners filled, seams within %.1e rad)" % (
+        len(corners), max(c["g1"] for c in corners)) if corners else ""
+    if not ok or seconds > 10:
+        print("%s, %d edge(s), R=%g: %s%s, %s, %.1f s; %s"
+              % (what, len(edges), r, rep["verdict"], seam, rep["solid_check"], seconds,
+                 "; ".join(sorted({x["reason"] for x in kept}))))
+    return GOOD if ok else "other"
+
+
+def print_totals(totals):
     for outcome, n in sorted(totals.items()):
         print("%4d %s" % (n, outcome))
+
+
+def plain_parts():
+    """(name, solid) of nine plain parts: pockets, a step, brackets, slots, ribs."""
+    def first(x):
+        return x[0] if isinstance(x, tuple) else x
+    out = [(name, first(make())) for name, make in (
+        ("open pocket", shapes.open_pocket), ("pocket block", shapes.pocket_block),
+        ("step", shapes.step), ("L bracket", shapes.l_bracket),
+        ("slot plate", shapes.slot_plate), ("boss into wall", shapes.boss_into_wall))]
+    return out + [
+        ("through slot", Part.makeBox(30, 20, 8).cut(Part.makeBox(6, 30, 5, V(12, -5, 3)))),
+        ("blind slot", Part.makeBox(30, 20, 8).cut(Part.makeBox(6, 15, 5, V(12, -5, 3)))),
+        ("crossing ribs", Part.makeBox(30, 30, 3).fuse(Part.makeBox(30, 3, 8, V(0, 13, 0)))
+         .fuse(Part.makeBox(3, 30, 8, V(13, 0, 0))).removeSplitter())]
+
+
+def sweep(radii, pairs):
+    """C2 Fillet of every edge alone of the plain parts (plain_parts) at each of
+    `radii`, or with pairs, of every two edges that meet at a vertex: lists the runs
+    that are not GOOD or take over 10 s, then the totals."""
+    totals = {}
+    for name, s in plain_parts():
+        names = ["Edge%d" % (i + 1) for i in range(len(s.Edges))]
+        if pairs:
+            at = [[i for i, e in enumerate(s.Edges) if any(v.isSame(w) for w in e.Vertexes)]
+                  for v in s.Vertexes]
+            selections = sorted({(i, j) for edges in at for i in edges for j in edges if i < j})
+        else:
+            selections = [(i,) for i in range(len(s.Edges))]
+        for sel in selections:
+            for r in radii:
+                outcome = tried("%s %s" % (name, "+".join(names[i] for i in sel)), s,
+                                [names[i] for i in sel], r)
+                totals[outcome] = totals.get(outcome, 0) + 1
+    print_totals(totals)
 
 
 def median_ms(f, n=5):
@@ -602,6 +652,10 @@ def main():
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
     ap.add_argument("--turned", action="store_true",
                     help="each random part turned and moved to a random placement")
+    ap.add_argument("--sweep", metavar="R1,R2,...",
+                    help="instead, fillet every edge alone of nine plain parts at each radius")
+    ap.add_argument("--pairs", action="store_true",
+                    help="with --sweep, every two edges that meet at a vertex instead")
     ap.add_argument("--bop-times", action="store_true",
                     help="instead, time OCCT's BOP check on a filleted pentagonal prism")
     a = ap.parse_args()
@@ -612,6 +666,9 @@ def main():
         if count:
             random_survey(count, a.seed, place(make))
             return
+    if a.sweep:
+        sweep([float(r) for r in a.sweep.split(",")], a.pairs)
+        return
     if a.bop_times:
         bop_times()
         return
