@@ -14,9 +14,9 @@ processor and clock time of OCCT's BOP check on a filleted pentagonal prism and 
 plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only
 TEXT, the handful of typical parts is cut down to those whose name contains TEXT (to
 time them). With --turned, each random part is turned and moved to a random placement
-first. With --sweep R1,R2,..., every edge alone of nine plain parts (pockets, a step,
-brackets, slots, ribs) at each radius; with --pairs too, every two edges that meet at
-a vertex.
+first. With --sweep R1,R2,..., every edge alone of nine plain parts (pockets, a step, a
+bracket, a boss on a wall, slots, ribs) at each radius; with --pairs too, every two
+edges that meet at a vertex.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]
@@ -536,12 +536,14 @@ def tried(what, s, edges, r):
 
 
 def print_totals(totals):
+    """Each outcome of `totals` ({outcome: count}) with its count, a line each."""
     for outcome, n in sorted(totals.items()):
         print("%4d %s" % (n, outcome))
 
 
 def plain_parts():
-    """(name, solid) of nine plain parts: pockets, a step, brackets, slots, ribs."""
+    """(name, solid) of nine plain parts: pockets, a step, a bracket, a boss on a wall,
+    slots, crossing ribs."""
     def first(x):
         return x[0] if isinstance(x, tuple) else x
     out = [(name, first(make())) for name, make in (
