@@ -223,10 +223,13 @@ def survey(only=""):
                  occt_check(shape, edges, r)))
 
 
+def first(x):
+    """The solid of what a shapes.* function returns: x, or its first item."""
+    return x[0] if isinstance(x, tuple) else x
+
+
 def all_edge_parts():
     """(name, solid, radius) of each part whose every edge is filleted."""
-    def first(x):
-        return x[0] if isinstance(x, tuple) else x
     out = [("box 10", Part.makeBox(10, 10, 10), 2.0),
            ("box 20 x 20 x 10 with a hole", Part.makeBox(20, 20, 10).cut(
                Part.makeCylinder(3, 10, V(10, 10, 0))), 1.0),
@@ -544,8 +547,6 @@ def print_totals(totals):
 def plain_parts():
     """(name, solid) of nine plain parts: pockets, a step, a bracket, a boss on a wall,
     slots, crossing ribs."""
-    def first(x):
-        return x[0] if isinstance(x, tuple) else x
     out = [(name, first(make())) for name, make in (
         ("open pocket", shapes.open_pocket), ("pocket block", shapes.pocket_block),
         ("step", shapes.step), ("L bracket", shapes.l_bracket),

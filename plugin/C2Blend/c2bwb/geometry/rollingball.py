@@ -75,24 +75,27 @@ def _extends(face, points, tol):
     one of them on face itself (within tol): that face of the result is an original one
     trimmed and extended, as a pocket's wall where a fillet of the rim's edge beside it
     ends in that wall (its end section cut out of the wall, below the old top)."""
-    def on(p):
-        return off_surface(face.Surface, p) <= ON_SURFACE * (1.0 + max(map(abs, p)))
+    if not _on_surface_of(face.Surface, points):
+        return False
     try:
-        return any(face.distToShape(Part.Vertex(p))[0] <= tol for p in points) \
-            and all(on(p) for p in points)
-    except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
+        return any(face.distToShape(Part.Vertex(p))[0] <= tol for p in points)
+    except RuntimeError:  # FreeCAD and OCCT errors derive from it
         return False
 
 
 def on_surface(face, points):
-    """True when every one of `points` lies on face's surface: within ON_SURFACE of its
-    projection there, relative to the point's size (1 + its largest coordinate)."""
+    """True when every one of `points` lies within face's bounding box (enlarged by
+    ON_SURFACE relative) and on its surface (_on_surface_of)."""
     box = face.BoundBox
     box.enlarge(ON_SURFACE * (1.0 + box.DiagonalLength))
-    if not all(box.isInside(p) for p in points):
-        return False
+    return all(box.isInside(p) for p in points) and _on_surface_of(face.Surface, points)
+
+
+def _on_surface_of(surface, points):
+    """True when every one of `points` lies on `surface`: within ON_SURFACE of its
+    projection there, relative to the point's size (1 + its largest coordinate)."""
     try:
-        return all(off_surface(face.Surface, p) <= ON_SURFACE * (1.0 + max(map(abs, p)))
+        return all(off_surface(surface, p) <= ON_SURFACE * (1.0 + max(map(abs, p)))
                    for p in points)
     except RuntimeError:  # no projection (FreeCAD and OCCT errors derive from it)
         return False
