@@ -1215,6 +1215,24 @@ def open_pocket():
                           and e.BoundBox.XLength < 1e-9 and abs(e.BoundBox.XMin - 5) < 1e-9)
 
 
+def boss_over_pocket_rim():
+    """A 32 x 34 x 13 block with a pocket x 2.4 to 9.9, y 6.5 to 12.1, 8.4 deep, and a
+    boss of radius 4.25 and height 10.7 on the top, centred at (6.45, 12.15): its base
+    overhangs the pocket, its foot circle crossing the rim x = 9.9 at y = 9.67 and x =
+    2.4 at y = 10.86 (after --random-machined 40 --seed 75 --turned, part 2, in round
+    figures). Returns (solid, the rim edge of the wall x = 9.9 with the top, convex,
+    ending at the circle, and the edge of the wall x = 2.4 with the boss's base,
+    concave, ending at the circle)."""
+    s = Part.makeBox(32, 34, 13).cut(Part.makeBox(7.5, 5.6, 8.4, V(2.4, 6.5, 4.6)))
+    s = s.fuse(Part.makeCylinder(4.25, 10.7, V(6.45, 12.15, 13))).removeSplitter()
+
+    def at(x, under):  # the edge on the wall x at the top, under the boss's base or not
+        return _edge_named(s, lambda e: e.BoundBox.ZMin > 13 - 1e-9 and e.BoundBox.XLength
+                           < 1e-9 and abs(e.BoundBox.XMin - x) < 1e-9
+                           and (e.BoundBox.YMin > 10.5) == under)
+    return s, at(9.9, False), at(2.4, True)
+
+
 def three_slots():
     """A 39.24 x 39.62 x 9.757 block with three slots of rounded ends (half-widths 3.547,
     3.569 and 0.7777; the rounded ends of the first two overlap), to full precision

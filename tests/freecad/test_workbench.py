@@ -635,7 +635,7 @@ def test_end_face_that_cannot_grow_keeps_occt_face(monkeypatch):
     """Fault injection: no growth region can be built for the L bracket's inner edge's
     end faces. OCCT's face is kept with the reason, the solid (OCCT's, with its own
     grown end faces) is valid and the verdict is G1, never G2."""
-    monkeypatch.setattr(recut, "_growth", lambda face, edge, tol, across=None: None)
+    monkeypatch.setattr(recut, "_growth", lambda face, edge, tol, *sides: None)
     s, _, inner = shapes.l_bracket()
     solid, rep = C2Blend.fillet_report(s, [inner], 2.0, label="Bracket")
     assert_valid(solid)
@@ -872,6 +872,45 @@ def test_a_rim_fillet_ending_in_the_pocket_s_walls_is_a_blend(radius):
         assert len(walls) == 1
         assert walls[0].Area - 60.0 == pytest.approx(section, rel=1e-6)
         assert walls[0].BoundBox.XMin == pytest.approx(5 - radius, abs=1e-7)
+
+
+@pytest.mark.parametrize("radius", [0.3, 0.75])
+@pytest.mark.parametrize("which", ["convex rim", "concave under the base", "both"])
+def test_fillets_ending_where_a_boss_s_base_crosses_a_pocket_s_rim_are_blends(which, radius):
+    """A boss whose base overhangs a pocket (shapes.boss_over_pocket_rim): the rim edge x
+    = 9.9 (convex) ends where the boss's foot circle crosses it, and the edge x = 2.4
+    between the wall and the boss's base (concave) likewise. Each fillet ends on the
+    boss's cylinder, below its base, in a section reaching the pocket's wall straight
+    below that vertex, where the wall meets the cylinder only there: the cylinder grows
+    by the region between the section, its foot circle and that vertical
+    (recut._leg_meeting). The two growths lie at the two crossings of one circle, whose
+    arcs at each crossing are two edges of the cylinder on one curve (recut._grown takes
+    the one the section's end lies on). Before, both fillets were kept ("an end of its
+    blend leaves face Face1 ... away from the face's corners"), and at R = 0.75 the
+    convex one's cut back to the cylinder needed more points (ends.cut_edge). Checked:
+    a G2 blend, nothing kept, no corner; the cylinder stays one face and reaches z = 13
+    - R, the wall contact of each fillet; each wall stays one plane face; the volume
+    changes with the sign of OCCT's fillet (convex removes, concave adds) and by 75 to
+    100 % of its change, the blend leaving both planes flat (zero normal curvature)
+    where the rolling ball's circle leaves them curved."""
+    s, rim, under = shapes.boss_over_pocket_rim()
+    edges = {"convex rim": [rim], "concave under the base": [under], "both": [rim, under]}[which]
+    solid, rep = C2Blend.fillet_report(s, edges, radius, label="Part")
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    assert not rep["kept_occt_faces"] and not rep["corner_patches"]
+    assert len(rep["blends"]) == len(edges)
+    for t in rep["trimlines"]:
+        assert t["verdict"] == "G2" and t["g1"] < 1e-8 and t["g2_rel"] < 1e-6, t
+    boss = [f for f in solid.Faces if isinstance(f.Surface, Part.Cylinder)]
+    assert len(boss) == 1 and boss[0].Surface.Radius == pytest.approx(4.25, abs=1e-12)
+    assert boss[0].BoundBox.ZMin == pytest.approx(13 - radius, abs=1e-7)
+    for x in (2.4, 9.9):
+        assert len([f for f in solid.Faces if isinstance(f.Surface, Part.Plane)
+                    and f.BoundBox.XLength < 1e-9 and abs(f.BoundBox.XMin - x) < 1e-9]) == 1
+    ours = solid.Volume - s.Volume
+    occt = s.makeFillet(radius, [s.getElement(e) for e in edges]).Volume - s.Volume
+    assert 0.75 < ours / occt < 1.0, (ours, occt)
 
 
 @pytest.mark.parametrize("case", ["convex", "concave", "beside a boss"])

@@ -107,10 +107,14 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         def across(x, f=t.orig):  # the surface beyond f's edge x
             return next((g.Surface for g in shape.ancestorsOfType(x, Part.Face)
                          if not g.isSame(f)), None)
+
+        def meeting(v, f=t.orig):  # the solid's other faces at f's vertex v
+            return [(("face", g.hashCode()), g.Surface)
+                    for g in shape.ancestorsOfType(v, Part.Face) if not g.isSame(f)]
         for e in t.tools:
             if any(e is x for x in t.inside):
                 continue
-            parts = recut.parts_along(t.orig, e, tol, across)
+            parts = recut.parts_along(t.orig, e, tol, across, meeting)
             if parts is None:
                 own = [b for b in t.owners if any(e.isSame(x) for x in b.face.Edges)]
                 if not own:  # an edge of a fillet kept as OCCT's, or of a corner patch

@@ -103,27 +103,38 @@ def _leg_along(face, e, p, corner, tol, across, crossings):
                  if g is not None), None)
 
 
-def _growth(face, edge, tol, across=lambda e: None):
+def _growth(face, edge, tol, across=lambda e: None, meeting=lambda v: []):
     """The region by which a fillet's end extends `face`: a concave fillet adds
     material, a convex one ending on a face that bulges out (a box edge ending on a
     cylinder) uncovers some. The region lies on the face's surface, bounded by `edge`
     (the blend's end section, on that surface outside the face) and two legs from its
     ends to a vertex of the face (the corner), along the curves of the face's edges
     there, extended past them where needed (_leg_along; across(e): the surface beyond
-    face's edge e, or None). Returns (region face, corner point, legs), or None when
-    edge does not span such a corner or bounds no region with the legs."""
+    face's edge e, or None); where no corner has two such legs, one of them may run
+    along the surface of another face of the solid at the corner (_leg_meeting;
+    meeting(v): [(key, surface)] of those at face's vertex v). Returns (region face,
+    corner point, legs), or None when edge does not span such a corner or bounds no
+    region with the legs."""
     ends = [v.Point for v in edge.Vertexes]
     if len(ends) != 2:
         return None
-    spans, crossings = [], {}  # (length of the legs, corner, legs); for _leg_along
-    for corner in face.Vertexes:
-        at = [e for e in face.Edges
-              if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
-        legs = [next((g for g in (_leg_along(face, e, p, corner.Point, tol, across,
-                                             crossings)
-                                  for e in at) if g is not None), None) for p in ends]
-        if None not in legs:
-            spans.append((sum(g.Length for g in legs), corner, legs))
+    crossings = {}  # for _leg_along and _leg_meeting
+
+    def find(meet):  # [(length of the legs, corner, legs)]
+        found = []
+        for corner in face.Vertexes:
+            at = [e for e in face.Edges
+                  if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
+            legs = [next((g for g in (_leg_along(face, e, p, corner.Point, tol, across,
+                                                 crossings)
+                                      for e in at) if g is not None), None) for p in ends]
+            if meet and legs.count(None) == 1:
+                k = legs.index(None)
+                legs[k] = _leg_meeting(face, ends[k], corner, tol, meeting, crossings)
+            if None not in legs:
+                found.append((sum(g.Length for g in legs), corner, legs))
+        return found
+    spans = find(False) or find(True)
     if not spans:
         return None
     # the nearest such corner: a far one on the same curves spans the face's other end
@@ -156,7 +167,31 @@ def _loop(edges, tol):
     return Part.Wire(copies)
 
 
-def parts_along(face, edge, tol, across):
+def _leg_meeting(face, p, corner, tol, meeting, crossings):
+    """The leg (_leg) from point p to vertex `corner` of face along the intersection of
+    face's surface with that of another face of the solid at the corner (meeting) on
+    which p lies, else None. A convex pocket rim's fillet that ends where a boss's
+    base, level with the top, crosses the rim ends on the boss's cylinder, below the
+    base: its end section reaches the pocket's wall straight below the vertex where
+    the cylinder touches the wall, which meets the cylinder at that vertex only
+    (--random-machined 40 --seed 75 --turned, part 2). crossings: a dict keeping each
+    surface's intersection curves, computed once."""
+    for key, other in meeting(corner):
+        if off_surface(other, p) > tol:
+            continue
+        if key not in crossings:
+            try:
+                crossings[key] = face.Surface.intersectSS(other)
+            except Part.OCCError:
+                crossings[key] = []
+        leg = next((g for g in (_leg(c, p, corner.Point, tol) for c in crossings[key])
+                    if g is not None), None)
+        if leg is not None:
+            return leg
+    return None
+
+
+def parts_along(face, edge, tol, across, meeting=lambda v: []):
     """How face grows along an edge on its surface that does not lie on it: ([parts of
     edge on face], [(part off face, its _growth)]), or None when a part off the face
     spans no corner. The edge is one part off the face (a fillet's end section beyond
@@ -164,13 +199,15 @@ def parts_along(face, edge, tol, across):
     patch where two concave fillets meet a convex one cuts across the corner of the
     face between the concave ones, whose surface the convex fillet uncovers (a
     gusset's sloped edge meeting the floor, R = 1: the patch's edge on the floor cuts
-    the corner of the gusset's footprint 0.02 deep). across: as _growth takes it."""
-    g = _growth(face, edge, tol, across)
+    the corner of the gusset's footprint 0.02 deep). across, meeting: as _growth takes
+    them."""
+    g = _growth(face, edge, tol, across, meeting)
     if g is not None:
         return [], [(edge, g)]
     parts = face.copy().generalFuse([edge], tol)[1][1]  # a copy: see cut_face
     on = [p for p in parts if edge_on_face(p, face, tol)]
-    off = [(p, _growth(face, p, tol, across)) for p in parts if not any(p is q for q in on)]
+    off = [(p, _growth(face, p, tol, across, meeting)) for p in parts
+           if not any(p is q for q in on)]
     if not on or any(g is None for _, g in off):
         return None
     return on, off
@@ -260,9 +297,14 @@ def _grown(face, section, whole, corner, region, legs, tol):
             if ending:  # an edge at the corner ends there: the region's leg
                 drop += ending
                 continue
-            g = next(((e, g) for e, g in ((e, _end_at(e, corner, p, tol)) for e in at) if g),
-                     None)
-            if g is not None:  # shortened or extended along its curve
+            # shortened or extended along its curve: the one p lies on, where both
+            # edges at the corner are arcs of one curve (a boss's foot circle, split
+            # where it crosses a pocket's rim: --random-machined 40 --seed 75
+            # --turned, part 2), else the one whose curve holds p
+            cut = [(e, g) for e, g in ((e, _end_at(e, corner, p, tol)) for e in at) if g]
+            g = next((x for x in cut if x[0].distToShape(Part.Vertex(p))[0] <= tol),
+                     cut[0] if cut else None)
+            if g is not None:
                 drop.append(g[0])
                 moved.append(g[1])
                 continue
