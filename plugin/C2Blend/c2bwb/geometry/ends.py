@@ -230,7 +230,6 @@ def cut_edge(surface, scale, tool_face, near, touch=None):
     nodes). Raises ValueError saying why it cannot."""
     tool = tool_face.Surface
     start, x = _start(surface, tool, near, touch)
-    made = None
     for count in (CUT_NODES, REFINE * CUT_NODES):
         sol = _march(surface, tool, _nodes(start, 1.0 - start, count), x, scale, touch)
         made = _curve(surface, tool, sol)

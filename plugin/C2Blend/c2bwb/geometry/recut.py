@@ -91,9 +91,17 @@ def _leg_along(face, e, p, corner, tol, across, crossings):
     if leg is not None or not isinstance(e.Curve, Part.BSplineCurve):
         return leg
     other = across(e)
-    if other is None or off_surface(other, p) > tol:
+    if other is None:
         return None
-    key = e.hashCode()
+    return _leg_crossing(face, other, e.hashCode(), p, corner, tol, crossings)
+
+
+def _leg_crossing(face, other, key, p, corner, tol, crossings):
+    """The leg (_leg) from point p to `corner` along a curve where face's surface
+    crosses surface `other`, or None where p is not on `other` or on such a curve.
+    crossings: a dict keeping the intersection curves under `key`, computed once."""
+    if off_surface(other, p) > tol:
+        return None
     if key not in crossings:
         try:
             crossings[key] = face.Surface.intersectSS(other)
@@ -119,22 +127,23 @@ def _growth(face, edge, tol, across=lambda e: None, meeting=lambda v: []):
     if len(ends) != 2:
         return None
     crossings = {}  # for _leg_along and _leg_meeting
-
-    def find(meet):  # [(length of the legs, corner, legs)]
-        found = []
-        for corner in face.Vertexes:
-            at = [e for e in face.Edges
-                  if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
-            legs = [next((g for g in (_leg_along(face, e, p, corner.Point, tol, across,
-                                                 crossings)
-                                      for e in at) if g is not None), None) for p in ends]
-            if meet and legs.count(None) == 1:
+    tried = []  # (corner, [its leg from each end along the face's edges, or None])
+    for corner in face.Vertexes:
+        at = [e for e in face.Edges
+              if not e.Degenerated and any(corner.isSame(v) for v in e.Vertexes)]
+        tried.append((corner, [next((g for g in (_leg_along(face, e, p, corner.Point, tol,
+                                                            across, crossings)
+                                                 for e in at) if g is not None), None)
+                               for p in ends]))
+    spans = [(sum(g.Length for g in legs), corner, legs) for corner, legs in tried
+             if None not in legs]  # (length of the legs, corner, legs)
+    if not spans:  # one leg, missing, may run along another face at the corner
+        for corner, legs in tried:
+            if legs.count(None) == 1:
                 k = legs.index(None)
                 legs[k] = _leg_meeting(face, ends[k], corner, tol, meeting, crossings)
-            if None not in legs:
-                found.append((sum(g.Length for g in legs), corner, legs))
-        return found
-    spans = find(False) or find(True)
+                if legs[k] is not None:
+                    spans.append((sum(g.Length for g in legs), corner, legs))
     if not spans:
         return None
     # the nearest such corner: a far one on the same curves spans the face's other end
@@ -174,21 +183,10 @@ def _leg_meeting(face, p, corner, tol, meeting, crossings):
     base, level with the top, crosses the rim ends on the boss's cylinder, below the
     base: its end section reaches the pocket's wall straight below the vertex where
     the cylinder touches the wall, which meets the cylinder at that vertex only
-    (--random-machined 40 --seed 75 --turned, part 2). crossings: a dict keeping each
-    surface's intersection curves, computed once."""
-    for key, other in meeting(corner):
-        if off_surface(other, p) > tol:
-            continue
-        if key not in crossings:
-            try:
-                crossings[key] = face.Surface.intersectSS(other)
-            except Part.OCCError:
-                crossings[key] = []
-        leg = next((g for g in (_leg(c, p, corner.Point, tol) for c in crossings[key])
-                    if g is not None), None)
-        if leg is not None:
-            return leg
-    return None
+    (--random-machined 40 --seed 75 --turned, part 2). crossings: as _leg_crossing
+    takes it."""
+    return next((g for g in (_leg_crossing(face, other, key, p, corner.Point, tol, crossings)
+                             for key, other in meeting(corner)) if g is not None), None)
 
 
 def parts_along(face, edge, tol, across, meeting=lambda v: []):
