@@ -992,6 +992,48 @@ def test_blend_coaxial_cylinders():
     assert min(r["g2"] for r in rep1["trimlines"]) > 0.5  # 1.30 and 1.07
 
 
+def test_blend_solid_from_a_hemisphere_closes_at_its_pole():
+    """A hemisphere's face ends in a degenerate edge at its pole, which bounds nothing:
+    the solid of the hemisphere, the blend and a cylinder needs one cap, at the
+    cylinder's far end (it once tried to cap the pole too, and failed). Its volume is
+    the hemisphere's and the cylinder's (closed forms) plus the blend capped by two
+    discs alone."""
+    r, rc, gap, h = 1.0, 0.8, 1.5, 2.0
+    hemi = Part.makeSphere(r, V(0, 0, 0), V(0, 0, 1), -90, 0).Faces[0]
+    assert any(e.Degenerated for e in hemi.Edges)
+    equator = next(e for e in hemi.Edges if isinstance(e.Curve, Part.Circle)
+                   and not e.Degenerated)
+    cyl = Part.makeCylinder(rc, h, V(0, 0, gap))
+    foot = cyl.Edges[shapes.circle_edge(cyl, gap)]
+    face, rep = C2Blend.blend(hemi, equator, cyl.Faces[0], foot, report=True)
+    assert_g2(rep)
+    solid = C2Blend.blend_solid([hemi, face, cyl.Faces[0]])
+    assert_valid(solid)
+    assert len(solid.Faces) == 4  # hemisphere, blend, cylinder, one disc
+    middle = C2Blend.blend_solid([face]).Volume
+    assert middle > 0
+    expected = 2.0 / 3.0 * math.pi * r ** 3 + math.pi * rc ** 2 * h + middle
+    assert solid.Volume == pytest.approx(expected, rel=1e-6)
+
+
+def test_blend_solid_names_a_boundary_it_cannot_cap():
+    """A free boundary that is closed but not planar (a cylinder's end cut by a
+    crosswise cylinder) takes no plane cap: the message says where it is and why."""
+    a, b, fa, ea, fb, eb = coaxial()
+    cut = b.common(Part.makeCylinder(3, 20, V(-10, 0, 1.2), V(1, 0, 0)))
+    side = max(cut.Faces, key=lambda f: f.Area)
+    assert isinstance(side.Surface, Part.Cylinder) and side.Surface.Radius == 0.8
+    face = C2Blend.blend(fa, ea, side, next(e for e in side.Edges if isinstance(
+        e.Curve, Part.Circle) and abs(e.Curve.Center.z - 3) < 1e-9))
+    with pytest.raises(C2Blend.Error) as ex:
+        C2Blend.blend_solid([fa, face, side], "Tube")
+    msg = str(ex.value)
+    assert "Tube" in msg and "not planar" in msg and "cannot cap" in msg
+    # the cut's top edge runs from z = 1.2 + sqrt(9 - 0.64) (at y = +-0.8) to 4.2 (y = 0)
+    x, y, z = map(float, re.search(r"around \(([^,]+), ([^,]+), ([^)]+)\)", msg).groups())
+    assert abs(x) < 1e-9 and abs(y) < 1e-9 and 1.2 + math.sqrt(8.36) < z < 4.2
+
+
 
 @pytest.mark.parametrize("axis", [V(math.sin(0.5), 0, math.cos(0.5)), V(0, 1, 0)])
 def test_blend_between_cylinders_at_an_angle(axis):

@@ -156,7 +156,8 @@ def close_solid(faces, where):
     free = []
     for e in shell.Edges:
         owners = shell.ancestorsOfType(e, Part.Face)
-        if len(owners) == 1 and not e.isSeam(owners[0]):
+        # a sphere's or cone's pole is a degenerate edge of one face, not a boundary
+        if len(owners) == 1 and not e.isSeam(owners[0]) and not e.Degenerated:
             free.append(e)
     caps = []
     for w in Part.sortEdges(free) if free else []:
@@ -164,8 +165,12 @@ def close_solid(faces, where):
         try:
             caps.append(Part.Face(wire))
         except Exception as ex:
-            raise C2BlendError("cannot cap a free boundary of %d edges (%s)"
-                               % (len(w), occt_message(ex)),
+            c = wire.BoundBox.Center
+            why = "it is not closed" if not wire.isClosed() else "it is not planar" \
+                if wire.findPlane() is None else "OCCT: " + occt_message(ex)
+            raise C2BlendError("cannot cap the free boundary of %d edge(s) around (%.4g, "
+                               "%.4g, %.4g) with a plane face (%s): cap it yourself, or "
+                               "pass faces that close it" % (len(w), c.x, c.y, c.z, why),
                                where, "sewing") from None
     sewn = Part.Compound(list(shell.Faces) + caps)
     sewn.sewShape()
