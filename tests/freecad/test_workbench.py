@@ -992,6 +992,41 @@ def test_blend_coaxial_cylinders():
     assert min(r["g2"] for r in rep1["trimlines"]) > 0.5  # 1.30 and 1.07
 
 
+@pytest.mark.parametrize("which", ["torus", "cylinders"])
+def test_blend_faces_made_b_splines_give_the_same_blend(which):
+    """The same faces as B-spline surfaces (toNurbs, as a STEP import gives them) give
+    the same G2 blend: each side's cross direction is found in the face's parameter
+    plane. (Found by offsetting the point in space and projecting it back, it flipped
+    at some samples of a B-spline face that ends at the edge, whose projection put the
+    point beyond it on the edge, and the fit failed: "the trimline rows ... are within
+    1.02e-05 of their size".) The analytic faces' blend is the reference: thesis Table
+    4's curvatures hold on it (test_blend_coaxial_cylinders)."""
+    if which == "torus":  # the lower half of a torus, to a cylinder above it
+        a = Part.makeTorus(1.87, 0.6, V(0, 0, 0), V(0, 0, 1), -90, 0)
+        b = Part.makeCylinder(1.01, 3, V(0, 0, 2.13))
+        fa, fb = a.Faces[0], b.Faces[0]
+        ea = max(fa.Edges, key=lambda e: e.BoundBox.ZMax + e.BoundBox.ZMin)
+        eb = fb.Edges[shapes.circle_edge(b, 2.13)]
+    else:
+        _, _, fa, ea, fb, eb = coaxial()
+    exact, rep = C2Blend.blend(fa, ea, fb, eb, report=True)
+    assert_g2(rep)
+    na, nb = fa.toNurbs().Faces[0], fb.toNurbs().Faces[0]
+    assert isinstance(na.Surface, Part.BSplineSurface)
+    assert isinstance(nb.Surface, Part.BSplineSurface)
+
+    def same(face, edge):  # the edge of the B-spline face on the same curve
+        mid = edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
+        return min(face.Edges, key=lambda e: e.distToShape(Part.Vertex(mid))[0])
+    face, rep = C2Blend.blend(na, same(na, ea), nb, same(nb, eb), report=True)
+    assert_g2(rep)
+    u0, u1, v0, v1 = face.Surface.bounds()
+    for i in range(1, 8):
+        for j in range(8):
+            p = face.Surface.value(u0 + (u1 - u0) * i / 8, v0 + (v1 - v0) * j / 8)
+            assert exact.distToShape(Part.Vertex(p))[0] < 1e-7
+
+
 def test_blend_solid_from_a_hemisphere_closes_at_its_pole():
     """A hemisphere's face ends in a degenerate edge at its pole, which bounds nothing:
     the solid of the hemisphere, the blend and a cylinder needs one cap, at the

@@ -41,15 +41,21 @@ class Trimline:
             a = 1.0
         return self.edge.getParameterByLength(a * self.length)
 
-    def outward(self, p, tangent):
-        """Unit tangent of the face at p, perpendicular to the edge, pointing out of the
-        face across the edge."""
-        fr = self.face.Surface.parameter(p)
-        n = self.face.normalAt(*fr)
-        d = n.cross(tangent)
+    def outward(self, frame, tangent):
+        """Unit tangent of the face at the frame's point (on the edge), perpendicular to
+        the edge, pointing out of the face across the edge: towards the side that the
+        face's domain does not hold, tested in its parameter plane. (Offset in space and
+        projected back, a point beyond the edge of a B-spline face that ends there, as a
+        cylinder's face made a B-spline by toNurbs, was put on the edge, which the domain
+        holds: the direction flipped at some samples, and the blend's fit failed.)"""
+        d = frame.n.cross(tangent)
         d.normalize()
+        a, b = frame.coords(d)
         eps = 1e-4 * max(self.length, 1e-3)
-        u, v = self.face.Surface.parameter(p - d * eps)
+        ahead = self.face.isPartOfDomain(frame.u + eps * a, frame.v + eps * b)
+        if ahead != self.face.isPartOfDomain(frame.u - eps * a, frame.v - eps * b):
+            return -d if ahead else d
+        u, v = self.face.Surface.parameter(frame.p - d * eps)  # both sides or neither
         return d if self.face.isPartOfDomain(u, v) else -d
 
 
@@ -108,8 +114,8 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
             a, b = t1.param(s), t2.param(s)
             p1, p2 = edge1.valueAt(a), edge2.valueAt(b)
             g1, g2 = edge1.tangentAt(a), edge2.tangentAt(b)
-            return (frame_at_point(face1, p1), g1, t1.outward(p1, g1),
-                    frame_at_point(face2, p2), g2, t2.outward(p2, g2))
+            f1, f2 = frame_at_point(face1, p1), frame_at_point(face2, p2)
+            return f1, g1, t1.outward(f1, g1), f2, g2, t2.outward(f2, g2)
         fractions = (k / n if t1.closed else k / (n - 1) for k in range(n))
         return pair_rows((pair(s) for s in fractions), nrows, tension, where)
 
