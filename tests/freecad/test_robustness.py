@@ -419,3 +419,23 @@ def test_plugin_writers_are_atomic(tmp_path):
     write_shape(Part.makeBox(4, 5, 6), str(target))
     assert Part.read(str(target)).Volume == pytest.approx(120.0)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["dir.step", "frame.step"]
+
+
+def test_a_frame_at_a_b_spline_sphere_s_pole_is_degenerate_not_an_error():
+    """Near the pole of a B-spline sphere (toNurbs) S_u is rounding noise: the frame there
+    is refused as degenerate (ValueError, which the contact tracing turns into a
+    reason the fillet is kept), not FreeCAD's "Cannot normalize null vector", which
+    escaped as an unexplained error from a part made B-splines. Away from the pole
+    the normal is the sphere's, (p - centre) / r."""
+    from c2bwb.geometry.surface import Frame
+    face = Part.makeSphere(2.0).Faces[0].toNurbs().Faces[0]
+    s = face.Surface
+    v_top = s.bounds()[3]
+    for dv in (0.0, 1e-16, 1e-15, 1e-12):
+        with pytest.raises(ValueError, match="degenerate surface point"):
+            Frame(face, 0.3, v_top - dv)
+    for dv in (1e-6, 1e-3, 0.5):
+        f = Frame(face, 0.3, v_top - dv)
+        radial = f.p / f.p.Length
+        assert f.p.Length == pytest.approx(2.0, abs=1e-12)
+        assert f.n.getAngle(radial) < 1e-8

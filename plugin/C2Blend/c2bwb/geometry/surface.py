@@ -35,9 +35,13 @@ class Frame:
         self.suv = s.getDN(u, v, 1, 1)
         self.svv = s.getDN(u, v, 0, 2)
         n = self.su.cross(self.sv)
-        if n.Length == 0.0:
+        # at a pole of a B-spline sphere (toNurbs) S_u is rounding noise, and so is the
+        # normal: 0.15 rad off 1e-15 from the pole, 7e-5 rad 1e-12 from it (where
+        # FreeCAD's normalize() did not raise its own error, as it does below 2.2e-16)
+        size = n.Length
+        if not size > 1e-12 * (self.su.dot(self.su) + self.sv.dot(self.sv)):
             raise ValueError("degenerate surface point (S_u x S_v = 0) at (%g, %g)" % (u, v))
-        n.normalize()
+        n = n * (1.0 / size)
         self.n = -n if face.Orientation == "Reversed" else n
 
     def normal_derivatives(self):
