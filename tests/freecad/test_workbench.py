@@ -1027,6 +1027,42 @@ def test_blend_faces_made_b_splines_give_the_same_blend(which):
             assert exact.distToShape(Part.Vertex(p))[0] < 1e-7
 
 
+def test_blend_faces_moved_anywhere_give_the_moved_blend():
+    """Open trimlines (a sphere zone and a cylinder swept 120 degrees) moved by 18
+    rotations, and by a placement of tools/blend_survey.py (--seed 1, pair 2), give the
+    blend of the unmoved faces, moved, and G2. (There, and at the rotation by 85
+    degrees, the projection of the zone's corner u = 0 came back as u = 2 pi, outside
+    the face's parameter range; the cross direction at that end was taken the wrong
+    way, and the blend turned from the zone by 1.2e-4 rad.)"""
+    def faces(pl):
+        zone = Part.makeSphere(1.5, V(), V(0, 0, 1), -90, -20, 120).Faces[0]
+        cyl = Part.makeCylinder(1.2, 2, V(0, 0, 0.5), V(0, 0, 1), 120)
+        side = max(cyl.Faces, key=lambda f: f.Area)
+        for f in (zone, side):
+            f.Placement = pl.multiply(f.Placement)
+        rim = max((e for e in zone.Edges if not e.Degenerated
+                   and isinstance(e.Curve, Part.Circle)),
+                  key=lambda e: pl.inverse().multVec(e.CenterOfMass).z)
+        foot = min((e for e in side.Edges if isinstance(e.Curve, Part.Circle)),
+                   key=lambda e: pl.inverse().multVec(e.CenterOfMass).z)
+        return zone, rim, side, foot
+    still = C2Blend.blend(*faces(FreeCAD.Placement()))
+    u0, u1, v0, v1 = still.Surface.bounds()
+    grid = [still.Surface.value(u0 + (u1 - u0) * i / 6, v0 + (v1 - v0) * j / 6)
+            for i in range(7) for j in range(7)]
+    moves = [FreeCAD.Placement(V(3, -2, 7), FreeCAD.Rotation(V(1, 2, 3), angle))
+             for angle in range(5, 360, 20)]
+    moves.append(FreeCAD.Placement(
+        V(0.8426488249981787, 27.844261500014582, 2.093841761314522),
+        FreeCAD.Rotation(-0.030131146340091886, -0.0029092352754333827,
+                         -0.1327880295364521, 0.990682083002499)))
+    for pl in moves:
+        face, rep = C2Blend.blend(*faces(pl), report=True)
+        assert_g2(rep)
+        for p in grid:
+            assert face.distToShape(Part.Vertex(pl.multVec(p)))[0] < 1e-7, pl
+
+
 def test_blend_solid_from_a_hemisphere_closes_at_its_pole():
     """A hemisphere's face ends in a degenerate edge at its pole, which bounds nothing:
     the solid of the hemisphere, the blend and a cylinder needs one cap, at the
