@@ -41,7 +41,7 @@ class Frame:
         size = n.Length
         if not size > 1e-12 * (self.su.dot(self.su) + self.sv.dot(self.sv)):
             raise ValueError("degenerate surface point (S_u x S_v = 0) at (%g, %g)" % (u, v))
-        n = n * (1.0 / size)
+        n = Vector(n.x / size, n.y / size, n.z / size)  # normalize()'s bits, any size
         self.n = -n if face.Orientation == "Reversed" else n
 
     def normal_derivatives(self):
