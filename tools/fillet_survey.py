@@ -14,14 +14,14 @@ processor and clock time of OCCT's BOP check on a filleted pentagonal prism and 
 plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only
 TEXT, the handful of typical parts is cut down to those whose name contains TEXT (to
 time them). With --turned, each random part is turned and moved to a random placement
-first. With --sweep R1,R2,..., every edge alone of nine plain parts (pockets, a step, a
-bracket, a boss on a wall, slots, ribs) at each radius; with --pairs too, every two
-edges that meet at a vertex.
+first; with --splines, made B-splines (toNurbs) first. With --sweep R1,R2,..., every
+edge alone of nine plain parts (pockets, a step, a bracket, a boss on a wall, slots,
+ribs) at each radius; with --pairs too, every two edges that meet at a vertex.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]
        [--random N | --random-edges N | --random-machined N | --random-shafts N |
-        --random-plates N [--seed S] [--turned] |
+        --random-plates N [--seed S] [--turned] [--splines] |
         --sweep R1,R2,... [--pairs]]
        [--bop-times]
 """
@@ -495,6 +495,22 @@ def turned(make):
     return made
 
 
+def splines(make):
+    """make, its part then made B-splines (toNurbs: every face a B-spline surface, as
+    some STEP exports are), its edges found again by their midpoints."""
+    def made(rng):
+        kind, s, edges, r = make(rng)
+        ns = s.toNurbs()
+        found = []
+        for name in edges:
+            e = s.getElement(name)
+            mid = Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+            found.append("Edge%d" % (1 + min(range(len(ns.Edges)),
+                                             key=lambda k: ns.Edges[k].distToShape(mid)[0])))
+        return kind + " (B-splines)", ns, found, r
+    return made
+
+
 def random_survey(count, seed, make=random_part):
     """Fillet `count` random parts (make(rng), seeded): lists those where a trimline is
     not G2, a fillet is kept as OCCT's, the solid is not valid or does not pass the
@@ -655,6 +671,8 @@ def main():
     ap.add_argument("--seed", type=int, default=2, help="of the random parts (2)")
     ap.add_argument("--turned", action="store_true",
                     help="each random part turned and moved to a random placement")
+    ap.add_argument("--splines", action="store_true",
+                    help="each random part made B-splines (toNurbs) first")
     ap.add_argument("--sweep", metavar="R1,R2,...",
                     help="instead, fillet every edge alone of nine plain parts at each radius")
     ap.add_argument("--pairs", action="store_true",
@@ -662,7 +680,9 @@ def main():
     ap.add_argument("--bop-times", action="store_true",
                     help="instead, time OCCT's BOP check on a filleted pentagonal prism")
     a = ap.parse_args()
-    place = turned if a.turned else (lambda make: make)
+    def place(make):
+        make = splines(make) if a.splines else make
+        return turned(make) if a.turned else make
     for count, make in ((a.random, random_part), (a.random_edges, random_block),
                         (a.random_machined, random_machined), (a.random_shafts, random_shaft),
                         (a.random_plates, random_plate)):
