@@ -76,19 +76,17 @@ def pair(rng):
     gap, tilt = k * rng.uniform(0.5, 4.0), rng.choice((0.0, 0.0, rng.uniform(-0.6, 0.6)))
     shift = rng.choice((0.0, k * rng.uniform(-0.5, 0.5)))
     nurbs = rng.random() < 0.3
-    e1, e2 = rim(f1, True), rim(f2, False)
-    f2.translate(V(0, 0, -f2.BoundBox.ZMin))
-    f2.rotate(V(), V(1, 0, 0), math.degrees(tilt))
-    f2.translate(V(shift, 0, f1.BoundBox.ZMax + gap))
+    up = FreeCAD.Placement(V(shift, 0, f1.BoundBox.ZMax + gap),
+                           FreeCAD.Rotation(V(1, 0, 0), math.degrees(tilt))).multiply(
+        FreeCAD.Placement(V(0, 0, -f2.BoundBox.ZMin), FreeCAD.Rotation()))
     where = FreeCAD.Placement(V(*(k * rng.uniform(-50, 50) for _ in range(3))),
                               FreeCAD.Rotation(V(*(rng.uniform(-1, 1) for _ in range(3))),
                                                rng.uniform(0, 360)))
     faces = []
-    for f, e in ((f1, e1), (f2, e2)):
-        mid = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
-        f = f.toNurbs().Faces[0] if nurbs else f
-        f.Placement = where.multiply(f.Placement)
-        mid = where.multVec(mid)
+    for f, e, move in ((f1, rim(f1, True), where), (f2, rim(f2, False), where.multiply(up))):
+        mid = move.multVec(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+        f = f.toNurbs().Faces[0] if nurbs else f.copy()
+        f.Placement = move.multiply(f.Placement)
         faces += [f, min(f.Edges, key=lambda x: x.distToShape(Part.Vertex(mid))[0])]
     what = "%s -> %s, sweep %d, scale %g, gap %.3g, tilt %.2f rad, shift %.3g%s" % (
         kind1, kind2, sweep, k, gap, tilt, shift, ", B-splines" if nurbs else "")

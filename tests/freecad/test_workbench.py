@@ -1027,6 +1027,40 @@ def test_blend_faces_made_b_splines_give_the_same_blend(which):
             assert exact.distToShape(Part.Vertex(p))[0] < 1e-7
 
 
+def test_blend_faces_a_few_microns_across_made_b_splines_are_g2():
+    """A cone's rim to a sphere zone's, swept 120 degrees, 5 microns across, made
+    B-splines and placed (tools/blend_survey.py --seed 1, pair 23, in round figures
+    here). FreeCAD's arc length on a B-spline edge stops at 1e-7 model units, 2e-5 of
+    this rim: the samples moved unevenly along it, and the blend turned from the faces
+    by 1.6e-8 rad (G0 by the 1e-8 criterion). The same faces at scale 1 are G2."""
+    def pair(k):
+        axis = V(0, 0, 1)
+        cone = Part.makeCone(2.42 * k, 2.42 * 1.15 * k, 3.45 * k, V(), axis, 120)
+        zone = Part.makeSphere(2.78 * k, V(), axis, -27.1, 90, 120)
+        f1 = max(cone.Faces, key=lambda f: f.Area)
+        f2 = max(zone.Faces, key=lambda f: f.Area).copy()
+        f2.translate(V(0.333 * k, 0, f1.BoundBox.ZMax + 2.9 * k - f2.BoundBox.ZMin))
+        e1 = max((e for e in f1.Edges if e.BoundBox.ZLength < 1e-12),
+                 key=lambda e: e.BoundBox.ZMin)
+        e2 = min((e for e in f2.Edges if not e.Degenerated
+                  and e.BoundBox.ZLength < 1e-12), key=lambda e: e.BoundBox.ZMin)
+        where = FreeCAD.Placement(V(1.03 * k, -22.9 * k, -40.1 * k),
+                                  FreeCAD.Rotation(V(0.181, -0.860, -0.866), 159.3))
+        out = []
+        for f, e in ((f1, e1), (f2, e2)):
+            mid = where.multVec(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+            f = f.toNurbs().Faces[0]
+            f.Placement = where.multiply(f.Placement)
+            out += [f, min(f.Edges, key=lambda x: x.distToShape(Part.Vertex(mid))[0])]
+        return out
+    for k in (1.0, 1e-3):
+        faces = pair(k)
+        assert all(isinstance(f.Surface, Part.BSplineSurface) for f in faces[::2])
+        assert faces[1].Length == pytest.approx(2.42 * 1.15 * k * 2 * math.pi / 3, rel=1e-6)
+        face, rep = C2Blend.blend(*faces, report=True)
+        assert_g2(rep)
+
+
 def test_blend_faces_moved_anywhere_give_the_moved_blend():
     """Open trimlines (a sphere zone and a cylinder swept 120 degrees) moved by 18
     rotations, and by a placement of tools/blend_survey.py (--seed 1, pair 2), give the

@@ -34,12 +34,15 @@ class Trimline:
         self.start, self.sense = 0.0, 1.0
 
     def param(self, s):
-        """Edge parameter at normalised arc length s in [0, 1] from the start."""
+        """Edge parameter at normalised arc length s in [0, 1] from the start, to 1e-12 of
+        the edge's length: FreeCAD's default tolerance, 1e-7 model units, moved the
+        samples along a B-spline edge 4 thousandths long by up to 2e-5 of it, unevenly,
+        and the blend turned from its faces by 7e-8 rad."""
         a = (self.start + self.sense * s) % 1.0 if self.closed else (
             s if self.sense > 0 else 1.0 - s)
         if self.closed and a == 0.0 and s > 0.5:
             a = 1.0
-        return self.edge.getParameterByLength(a * self.length)
+        return self.edge.getParameterByLength(a * self.length, 1e-12 * self.length)
 
     def outward(self, frame, tangent):
         """Unit tangent of the face at the frame's point (on the edge), perpendicular to
