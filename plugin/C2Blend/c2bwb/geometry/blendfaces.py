@@ -15,6 +15,7 @@ from ..errors import C2BlendError, occt_message
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .inputs import check_params
+from .rollingball import period, snap
 from .solve import DATA_REL
 from .surface import frame_at_point
 from .trimlines import ROWS, pair_rows, spec_from_rows
@@ -55,24 +56,15 @@ class Trimline:
         d.normalize()
         a, b = frame.coords(d)
         eps = 1e-4 * max(self.length, 1e-3)
-        u, v = _in_range(self.face, frame.u, frame.v)
+        (u0, u1, v0, v1), s = self.face.ParameterRange, self.face.Surface
+        # a projection may return a parameter a period away (u = 2 pi at the corner
+        # u = 0 of a sphere zone swept 120 degrees, where both sides then lay outside)
+        u, v = snap(frame.u, u0, u1, period(s, 0)), snap(frame.v, v0, v1, period(s, 1))
         ahead = self.face.isPartOfDomain(u + eps * a, v + eps * b)
         if ahead != self.face.isPartOfDomain(u - eps * a, v - eps * b):
             return -d if ahead else d
         u, v = self.face.Surface.parameter(frame.p - d * eps)  # both sides or neither
         return d if self.face.isPartOfDomain(u, v) else -d
-
-
-def _in_range(face, u, v):
-    """(u, v) moved by whole periods of face's surface towards the middle of the face's
-    parameter range: a projection onto a sphere returned u = 2 pi for the corner u = 0
-    of a zone swept 120 degrees."""
-    s, (u0, u1, v0, v1) = face.Surface, face.ParameterRange
-    if s.isUPeriodic():
-        u -= s.UPeriod() * math.floor((u - 0.5 * (u0 + u1)) / s.UPeriod() + 0.5)
-    if s.isVPeriodic():
-        v -= s.VPeriod() * math.floor((v - 0.5 * (v0 + v1)) / s.VPeriod() + 0.5)
-    return u, v
 
 
 def align(t1, t2):

@@ -114,7 +114,7 @@ def midpoint(edge):
     return edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
 
 
-def _snap(c, lo, hi, period=None):
+def snap(c, lo, hi, period=None):
     """Parameter c brought to [lo, hi]: projections onto a periodic surface may return it
     a period away (on the seam, 0 for 2 pi), so the copy c + k period nearest to
     [lo, hi] is taken; then the end of [lo, hi] it lies within 1e-6 (relative) of, for
@@ -125,7 +125,7 @@ def _snap(c, lo, hi, period=None):
     return end if abs(end - c) < 1e-6 * (1 + abs(hi - lo)) else c
 
 
-def _period(surface, k):
+def period(surface, k):
     """The period of the surface's parameter k (0: u, 1: v), or None."""
     if k == 0:
         return surface.UPeriod() if surface.isUPeriodic() else None
@@ -218,7 +218,7 @@ class RollingBallFace:
         across = 1 - self.along
         r = self.face.ParameterRange
         lo, hi = (r[2], r[3]) if across == 1 else (r[0], r[1])
-        self.across = tuple(_snap(s.parameter(midpoint(e))[across], lo, hi, _period(s, across))
+        self.across = tuple(snap(s.parameter(midpoint(e))[across], lo, hi, period(s, across))
                             for e, _ in self.contacts)
         self.range = (r[0], r[1]) if self.along == 0 else (r[2], r[3])
 
@@ -234,14 +234,14 @@ class RollingBallFace:
     def along_at(self, edge):
         """The end of the along-range (range[0] or range[1]) at which `edge` (a link)
         lies, or None when it lies inside the range. On a periodic along-parameter the
-        projection may return the end a period away (0 for 2 pi); _snap folds it back."""
+        projection may return the end a period away (0 for 2 pi); snap folds it back."""
         a = self.along_of(midpoint(edge))
         return a if a in self.range else None
 
     def along_of(self, p):
         """The along-parameter of the face's point nearest to p, within range."""
         s = self.face.Surface
-        return _snap(s.parameter(p)[self.along], *self.range, _period(s, self.along))
+        return snap(s.parameter(p)[self.along], *self.range, period(s, self.along))
 
     def oblique(self, edge):
         """True when the link `edge` starts at an end of the along-range but does not
