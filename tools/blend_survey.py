@@ -29,9 +29,11 @@ import FreeCAD  # noqa: E402
 import Part  # noqa: E402
 
 import C2Blend  # noqa: E402
+from c2bwb.geometry.rollingball import midpoint  # noqa: E402
 
 V = FreeCAD.Vector
 KINDS = ("cylinder", "cone", "sphere zone", "torus zone", "B-spline revolution")
+GOOD = "G2, valid (and the solid valid)"
 
 
 def primary(rng, lower, sweep, k):
@@ -84,7 +86,7 @@ def pair(rng):
                                                rng.uniform(0, 360)))
     faces = []
     for f, e, move in ((f1, rim(f1, True), where), (f2, rim(f2, False), where.multiply(up))):
-        mid = move.multVec(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+        mid = move.multVec(midpoint(e))
         f = f.toNurbs().Faces[0] if nurbs else f.copy()
         f.Placement = move.multiply(f.Placement)
         faces += [f, min(f.Edges, key=lambda x: x.distToShape(Part.Vertex(mid))[0])]
@@ -102,20 +104,20 @@ def survey(count, seed):
         t0 = time.perf_counter()
         try:
             face, rep = C2Blend.blend(f1, e1, f2, e2, report=True)
-            ok = rep["verdict"] == "G2" and face.isValid()
-            line = "%s, %s" % (rep["verdict"], "valid" if face.isValid() else "NOT VALID")
+            valid = [face.isValid()]
+            line = "%s, %s" % (rep["verdict"], "valid" if valid[0] else "NOT VALID")
             if closed:
-                solid = C2Blend.blend_solid([f1, face, f2])
-                ok = ok and solid.isValid()
-                line += "; solid %s" % ("valid" if solid.isValid() else "NOT VALID")
+                valid.append(C2Blend.blend_solid([f1, face, f2]).isValid())
+                line += "; solid %s" % ("valid" if valid[1] else "NOT VALID")
+            ok = rep["verdict"] == "G2" and all(valid)
             if not ok:
                 line += "; worst trimline normal angle %.2g rad, curvature %.2g relative" % (
                     max(t["g1"] for t in rep["trimlines"]),
                     max(t["g2_rel"] for t in rep["trimlines"]))
-            outcome = "G2, valid (and the solid valid)" if ok else "other"
+            outcome = GOOD if ok else "other"
         except C2Blend.Error as ex:
             line, outcome = "error: %s" % ex, "error"
-        if outcome != "G2, valid (and the solid valid)":
+        if outcome != GOOD:
             print("%d %s: %s, %.2f s" % (n, what, line, time.perf_counter() - t0), flush=True)
         totals[outcome] = totals.get(outcome, 0) + 1
     for outcome, k in sorted(totals.items()):

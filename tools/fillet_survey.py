@@ -45,7 +45,7 @@ import Part  # noqa: E402
 
 import C2Blend  # noqa: E402
 import shapes  # noqa: E402
-from c2bwb.geometry.rollingball import RollingBallFace, new_faces  # noqa: E402
+from c2bwb.geometry.rollingball import RollingBallFace, midpoint, new_faces  # noqa: E402
 
 V = FreeCAD.Vector
 
@@ -503,8 +503,7 @@ def splines(make):
         ns = s.toNurbs()
         found = []
         for name in edges:
-            e = s.getElement(name)
-            mid = Part.Vertex(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+            mid = Part.Vertex(midpoint(s.getElement(name)))
             found.append("Edge%d" % (1 + min(range(len(ns.Edges)),
                                              key=lambda k: ns.Edges[k].distToShape(mid)[0])))
         return kind + " (B-splines)", ns, found, r
