@@ -2635,33 +2635,71 @@ def test_runs_end_where_the_contact_crosses_the_face_change():
                 assert plain.distToShape(Part.Vertex(p))[0] < 1e-6, p
 
 
-@pytest.mark.parametrize("part", ["bracket", "wall"])
-def test_concave_edge_ending_on_bspline_faces(part):
-    """The L bracket's inner edge, and the wall running into a cylinder, converted by
-    toNurbs() (every face a B-spline, as imported parts may arrive). The blend's end
-    sections lie outside the end faces (a plane, the cylinder), which grow by the
-    corner regions. A Boolean fuse of face and region split the section near the
-    trimline (a G2 section leaves the plane as d^3, within 1e-7 of the region's leg),
-    sewing left free edges, and OCCT's face was kept; now the face's wire is rebuilt to
-    end at the section. The blend and the grown end faces are those of the same part
+@pytest.mark.parametrize("part", ["bracket", "wall", "pocket"])
+def test_edge_ending_on_bspline_faces(part):
+    """The L bracket's inner edge, the wall running into a cylinder, and a pocket's rim,
+    converted by toNurbs() (every face a B-spline, as imported parts may arrive). The
+    blend's end sections lie outside the end faces (a plane, the cylinder, the pocket's
+    end walls), which grow by the corner regions. A Boolean fuse of face and region
+    split the section near the trimline (a G2 section leaves the plane as d^3, within
+    1e-7 of the region's leg), sewing left free edges, and OCCT's face was kept; now the
+    face's wire is rebuilt to end at the section. A pocket's end wall, a B-spline patch
+    that ends at its edges, could not grow beyond them ("an end of its blend leaves
+    face Face8 ... away from the face's corners", and OCCT's fillet was kept); now it
+    grows on its plane. The blend and the grown end faces are those of the same part
     with analytic faces (whose volumes other tests check against closed forms): a 7 x 7
     grid on each of the result's faces lies on that part's C2 fillet (to 1e-6)."""
+    radius = 2.0
     if part == "wall":
         s, inner = shapes.wall_into_cylinder()
+    elif part == "pocket":
+        s, _, inner, _ = shapes.pocket_block()
+        radius = 1.0
     else:
         s, _, inner = shapes.l_bracket()
     ns, edges = shapes.as_nurbs(s, [inner])
-    solid, rep = C2Blend.fillet_report(ns, edges, 2.0, label="Part")
+    solid, rep = C2Blend.fillet_report(ns, edges, radius, label="Part")
     assert solid.isValid() and bc.problems(solid, bop=False) is None
     assert rep["solid_check"] == "passes BRepCheck and the BOP check" or \
         "as in the input solid" in rep["solid_check"]
     assert_g2(rep)
     assert len(rep["blends"]) == 1 and not rep["kept_occt_faces"]
-    plain, _ = C2Blend.fillet_report(s, [inner], 2.0, label="Part")
+    plain, _ = C2Blend.fillet_report(s, [inner], radius, label="Part")
     assert len(solid.Faces) == len(plain.Faces)
     for f in solid.Faces:
         for p in rb.interior_points(f, 7):
             assert plain.distToShape(Part.Vertex(p))[0] < 1e-6, p
+
+
+def test_a_planar_b_spline_face_is_extensible_on_its_plane():
+    """A 3 x 4 x 5 box with a hole r = 1 along z, made B-splines: each planar face, and
+    its reverse, is the same face on its plane (recut.extensible), which a fillet's end
+    can grow past the patch's bounds: valid, its edges the face's own (shared with its
+    neighbours), its normal the face's, the box's axis (a fact), and its area the
+    rectangle's (12 - pi with the hole) to OCCT's 1e-2 on B-spline arcs. The plane goes
+    on where the patch ends (10 beyond it). The hole's wall is no plane: it is kept."""
+    box = Part.makeBox(3, 4, 5).cut(Part.makeCylinder(1, 7, V(1.5, 2, -1))).toNurbs()
+    faces = box.Solids[0].Faces
+    areas = {0: 20.0, 1: 15.0, 2: 12.0 - math.pi}  # by the axis of the normal
+    for f in faces + [g.reversed() for g in faces]:
+        g = recut.extensible(f, 1e-7)
+        p = recut._probe(f)
+        n = f.normalAt(*f.Surface.parameter(p))
+        if not f.Surface.isPlanar(1e-7):
+            assert g is f
+            continue
+        assert isinstance(g.Surface, Part.Plane) and g.isValid()
+        assert sorted(abs(x) for x in n) == pytest.approx([0.0, 0.0, 1.0], abs=1e-12)
+        assert g.normalAt(*g.Surface.parameter(p)).getAngle(n) < 1e-12
+        assert len(g.Edges) == len(f.Edges)
+        assert all(any(e.isSame(x) for x in f.Edges) for e in g.Edges)
+        axis = max(range(3), key=lambda k: abs(n[k]))
+        assert g.Area == pytest.approx(areas[axis], rel=1e-2)
+        d = n.cross(V(1, 0, 0)) if abs(n.x) < 0.5 else n.cross(V(0, 1, 0))
+        far = p + d * 10.0  # in the face's plane, 10 from the probe
+        plane = recut.extended_surface(f, 1e-7)
+        assert (plane.value(*plane.parameter(far)) - far).Length < 1e-9
+        assert (f.Surface.value(*f.Surface.parameter(far)) - far).Length > 1.0
 
 
 def test_a_preview_skips_the_bop_check(monkeypatch):

@@ -44,12 +44,15 @@ class _Touched:
     neighbours' growth regions); inside: those lying on the face itself, or their parts
     that do (parts_along); grown: an (end section, the edge it is or is a part of, corner,
     region) for each region it grows by (_growth, grown_face); legs: those of its and its
-    neighbours' growth regions, along which it keeps its corners (cut_face); owners:
+    neighbours' growth regions, along which it keeps its corners (cut_face); face: the
+    face cut and grown, orig, or where it grows past its boundary and is a planar
+    B-spline patch, orig on its plane (recut.extensible); owners:
     the blends concerned; occt: an edge of a fillet kept as OCCT's (or of a corner
     patch) leaves it away from its corners, so only OCCT's faces can take its place."""
 
     def __init__(self, orig):
         self.orig, self.tools, self.inside, self.grown, self.legs = orig, [], [], [], []
+        self.face = orig
         self.owners, self.occt = [], False
 
     @staticmethod
@@ -104,17 +107,18 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         t.inside += [e for e in t.tools if not any(e is x for x in t.inside)
                      and recut.edge_on_face(e, t.orig, tol)]
 
-        def across(x, f=t.orig):  # the surface beyond f's edge x
-            return next((g.Surface for g in shape.ancestorsOfType(x, Part.Face)
-                         if not g.isSame(f)), None)
+        def across(x, f=t.orig):  # the surface beyond f's edge x, as far as it goes
+            return next((recut.extended_surface(g, tol)
+                         for g in shape.ancestorsOfType(x, Part.Face) if not g.isSame(f)), None)
 
         def meeting(v, f=t.orig):  # the solid's other faces at f's vertex v
-            return [(("face", g.hashCode()), g.Surface)
+            return [(("face", g.hashCode()), recut.extended_surface(g, tol))
                     for g in shape.ancestorsOfType(v, Part.Face) if not g.isSame(f)]
-        for e in t.tools:
-            if any(e is x for x in t.inside):
-                continue
-            parts = recut.parts_along(t.orig, e, tol, across, meeting)
+        beyond = [e for e in t.tools if not any(e is x for x in t.inside)]
+        if beyond:  # the face grows past its boundary: a planar patch, as its plane
+            t.face = recut.extensible(t.orig, tol)
+        for e in beyond:
+            parts = recut.parts_along(t.face, e, tol, across, meeting)
             if parts is None:
                 own = [b for b in t.owners if any(e.isSame(x) for x in b.face.Edges)]
                 if not own:  # an edge of a fillet kept as OCCT's, or of a corner patch
@@ -154,7 +158,7 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
             # trimlines that OCCT's fillet ends at one point of the face are cut
             # as meeting there (recut.end_gap)
             gap = recut.end_gap(t.inside, occt_vertices, tol)
-            pieces = recut.cut_face(t.orig, t.inside, sharp, t.legs, max(tol, 2.0 * gap))
+            pieces = recut.cut_face(t.face, t.inside, sharp, t.legs, max(tol, 2.0 * gap))
             if not pieces and _occt_pieces(result, t, drop + kept_fillets, tol):
                 # every piece touches an edge the fillets consume, yet OCCT's fillet
                 # keeps some of the face (a pocket's wall under a boss, next to fillets

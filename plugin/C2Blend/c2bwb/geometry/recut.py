@@ -68,6 +68,39 @@ def original_face(shape, face):
     return min(on, key=lambda g: face_distance(g, p))
 
 
+def extended_surface(face, tol):
+    """face's surface, or where that is a B-spline or Bezier patch lying on a plane
+    within tol (a plane exported to STEP as a B-spline, a face after toNurbs()), that
+    plane: the patch ends at the face's boundary, the plane goes on beyond it, as a
+    face grown by a fillet's end needs (_growth, _leg_along)."""
+    s = face.Surface
+    if isinstance(s, (Part.BSplineSurface, Part.BezierSurface)) and s.isPlanar(tol):
+        return face.findPlane(tol) or s
+    return s
+
+
+def extensible(face, tol):
+    """face, or where its surface is a planar patch (extended_surface), the same face
+    on the plane: its wires, so its edges, shared, and oriented as face. The plane may
+    come the other way up, and a face on it with face's wires is then not valid: its
+    reverse is taken. Where neither is valid with face's area, face itself. (OCCT's
+    area of a face bounded by B-spline arcs is approximate: a 3 x 4 rectangle with a
+    hole r = 1, made B-splines, has 8.8677 on the patch and 8.8720 on the plane, where
+    12 - pi = 8.8584; so the areas are compared to 1e-2.)"""
+    s = face.Surface
+    plane = extended_surface(face, tol)
+    if isinstance(s, Part.Plane) or not isinstance(plane, Part.Plane):
+        return face
+    p = _probe(face)
+    for side in (plane, Part.Plane(plane.Position, -plane.Axis)):
+        out = Part.Face(side, face.Wires)
+        if out.isValid() and abs(out.Area - face.Area) <= 1e-2 * face.Area:
+            if out.normalAt(*side.parameter(p)).dot(face.normalAt(*s.parameter(p))) < 0:
+                out.reverse()
+            return out
+    return face
+
+
 def _leg(curve, p, corner, tol):
     """The edge of `curve` from point p to point `corner` (both on it within tol; on a
     periodic curve the shorter way round), or None when p is not on the curve."""
