@@ -2702,6 +2702,33 @@ def test_a_planar_b_spline_face_is_extensible_on_its_plane():
         assert (f.Surface.value(*f.Surface.parameter(far)) - far).Length > 1.0
 
 
+def test_growth_on_a_plane_bounded_by_b_spline_arcs_is_checked_by_its_mesh():
+    """A boss r = 3 on a block, made B-splines: its top, on its plane (extensible), is
+    a disc bounded by a B-spline circle, whose area OCCT gives as 28.152 (pi 9 =
+    28.274, a fact; the triangulation agrees to 1e-6). A notch 0.05 x 0.02 cut from its
+    rim at 1 rad leaves a face whose OCCT area misses the disc's less the notch's by
+    0.1, 170 times the notch, so the growth check (recut._check_growth) refused a
+    boss's top grown by a fillet's end (--random-machined 40 --seed 84 --splines, part
+    4: 119.2502 where Green's theorem gives 119.8084). On a plane it now compares the
+    triangulations' areas: the disc is the notched face grown by the notch, and the
+    disc is not the disc itself grown by the notch."""
+    s = Part.makeBox(10, 10, 2).fuse(Part.makeCylinder(3, 2, V(5, 5, 2))).removeSplitter()
+    top = next(f for f in s.toNurbs().Faces if f.BoundBox.ZMin > 3.9)
+    disc = recut.extensible(top, 1e-7)
+    assert isinstance(disc.Surface, Part.Plane)
+    assert disc.Area == pytest.approx(9 * math.pi, rel=1e-2)
+    assert sf.mesh_area(disc, 1e-5) == pytest.approx(9 * math.pi, rel=1e-6)
+    notch = Part.makeBox(0.05, 0.02, 1, V(-0.03, -0.01, 3.5))
+    notch.rotate(V(0, 0, 0), V(0, 0, 1), math.degrees(1.0))
+    notch.translate(V(5 + 3 * math.cos(1.0), 5 + 3 * math.sin(1.0), 0))
+    face, region = disc.cut(notch).Faces[0], disc.common(notch).Faces[0]
+    assert region.Area == pytest.approx(0.05 * 0.02, rel=0.5)
+    assert abs(disc.Area - face.Area - region.Area) > 10 * region.Area  # OCCT's areas
+    recut._check_growth(disc, face, face.Area, region, 1e-7)
+    with pytest.raises(ValueError, match="the grown face's area"):
+        recut._check_growth(disc, disc, disc.Area, region, 1e-7)
+
+
 def test_a_preview_skips_the_bop_check(monkeypatch):
     """The task panel's preview (bop=False) runs BRepCheck only: OCCT's BOP check is half
     the time of a many-edge fillet and may run to its 30 s limit, on every slider move.

@@ -363,7 +363,7 @@ def _grown(face, section, whole, corner, region, legs, tol):
     out = face.replaceShape(swap)
     try:
         _validate(out)
-        _check_growth(out, area, region, tol)
+        _check_growth(out, face, area, region, tol)
     except (ValueError, Part.OCCError):
         # the rebuild failed ("NULL shape", or a wrong area: a blind hole's wall, whose
         # domain spans more than a period round a side hole's opening, grown by a leg
@@ -374,21 +374,32 @@ def _grown(face, section, whole, corner, region, legs, tol):
         if len(fused) != 1:
             raise
         out = fused[0]
-        _check_growth(out, area, region, tol)
+        _check_growth(out, face, area, region, tol)
     return out
 
 
-def _check_growth(out, area, region, tol):
-    """Raise ValueError unless face `out`'s area is a face's `area` plus the region's."""
+def _check_growth(out, face, area, region, tol):
+    """Raise ValueError unless face `out`'s area is the area of `face` (`area`, OCCT's)
+    plus the region's."""
     miss = abs(out.Area - area - region.Area)
     # OCCT's area is off by up to 9e-6 (relative) on a face with long B-spline edges (a
     # helical ridge's section by a cylinder's end plane: 2.7e-3 of 307 once grown, by
     # Green's theorem); there the grown face holds a point inside the region, and its
     # area misses by less than half the region's
-    if miss > 1e-6 * (area + region.Area) and (
-            miss > 0.5 * region.Area or not _on_face(out, _probe(region), tol)):
-        raise ValueError("the grown face's area %.9g is not the face's %.9g plus the "
-                         "region's %.9g" % (out.Area, area, region.Area))
+    if miss <= 1e-6 * (area + region.Area) or (
+            miss <= 0.5 * region.Area and _on_face(out, _probe(region), tol)):
+        return
+    if isinstance(out.Surface, Part.Plane):
+        # on a plane bounded by B-spline arcs (a boss's top made B-splines, grown on
+        # its plane: extensible) OCCT's area was off by 0.47 % (119.2502, where
+        # Green's theorem and the triangulation give 119.8084): the triangulations'
+        # areas, exact on a plane but for the chords of curved edges, decide
+        d = 1e-5 * out.BoundBox.DiagonalLength
+        miss = abs(mesh_area(out, d) - mesh_area(face, d) - mesh_area(region, d))
+        if miss <= 0.5 * region.Area and _on_face(out, _probe(region), tol):
+            return
+    raise ValueError("the grown face's area %.9g is not the face's %.9g plus the "
+                     "region's %.9g" % (out.Area, area, region.Area))
 
 
 def edge_points(edge, fractions=(0.25, 0.5, 0.75)):
