@@ -848,6 +848,30 @@ def tall_l_block():
     return s, names, (a, b, c)
 
 
+def mitred_step():
+    """A step: a 19.76 x 12.22 x 14.42 box and half of it beside it, half as high, to
+    full precision (--random-edges 20 --seed 90, part 10). Returns (solid, names of 13
+    of its 18 edges, among them the lower step's front edge and the front vertical edge
+    below its end, whose fillets meet at a mitre, and first the three at the top of
+    the riser's back), and (a, b, c)."""
+    a, b, c = 19.76169051810392, 12.216377377779633, 14.423724133689285
+    s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.5 * a, b, 0.5 * c, V(a, 0, 0)))
+    s = s.removeSplitter()
+
+    def at(x, y, z):  # the straight edge at these coordinates, the one running along None
+        def found(e):
+            bb = e.BoundBox
+            return all(v is None or (abs(lo - v) < 1e-9 and hi - lo < 1e-9)
+                       for v, lo, hi in ((x, bb.XMin, bb.XMax), (y, bb.YMin, bb.YMax),
+                                         (z, bb.ZMin, bb.ZMax)))
+        return found
+    wheres = [(a, None, 0.5 * c), (a, b, None), (a, None, c), (0.0, 0.0, None),
+              (0.0, None, c), (0.0, b, None), (0.0, None, 0.0), (None, 0.0, c), (a, 0.0, None), (None, 0.0, 0.5 * c), (1.5 * a, 0.0, None),
+              (1.5 * a, None, 0.0), (None, b, 0.0)]
+    return s, sorted((_edge_named(s, at(*w)) for w in wheres), key=lambda n: int(n[4:])), \
+        (a, b, c)
+
+
 def box_with_void():
     """A 20 x 20 x 10 box with a closed 6 x 6 x 4 void from (7, 7, 3) (a solid of two
     shells, as a pocket closed by a boss fused over it makes: --random-machined 60

@@ -2671,6 +2671,49 @@ def test_edge_ending_on_bspline_faces(part):
             assert plain.distToShape(Part.Vertex(p))[0] < 1e-6, p
 
 
+def test_blends_meeting_beyond_their_mitre_have_its_end_tolerated():
+    """A step made B-splines (as toNurbs() gives it, a compound), 13 of its edges
+    filleted at R = 2.146. The lower step's front edge and the front vertical edge
+    below its end are two convex fillets meeting at a mitre, whose lower end lies on
+    the front face, which both blends touch G2. There their intersection is
+    ill-conditioned, and it ran on 2.4e-5 beyond the mitre's vertex, whose tolerance
+    was 1.2e-7: OCCT's BOP check found the solid self-intersecting ("BOPAlgo
+    SelfIntersect (2)"), and both blends were kept as OCCT's fillets. Now the vertex's
+    tolerance covers that stretch (assembly._tolerate_mitre_ends), within MITRE_REACH
+    of the mitre's length. The result is valid and passes the BOP check. The fillets
+    kept are those at the top of the riser's back, where OCCT's own corner on these
+    B-spline faces has no tangent contact. With the mitre's vertex's tolerance set
+    back, the BOP check finds the self-intersection again."""
+    s, edges, (a, b, c) = shapes.mitred_step()
+    ns = s.toNurbs()  # the same edges, in the same order
+    assert all(ns.getElement(n).distToShape(s.getElement(n))[0] < 1e-9 for n in edges)
+    radius = 2.146
+    solid, rep = C2Blend.fillet_report(ns, edges, radius, label="Part")
+    assert_valid(solid)
+    assert rep["solid_check"] == "passes BRepCheck and the BOP check"
+    # kept: the riser's top back edge, and the concave edge and back edge below it
+    riser = [n for n, bb in ((n, s.getElement(n).BoundBox) for n in edges)
+             if abs(bb.XMin - a) < 1e-9 and bb.XLength < 1e-9 and bb.YMax > b - 1e-9]
+    assert sorted(k["where"] for k in rep["kept_occt_faces"]) == sorted("Part." + n for n in riser)
+    assert all(r["verdict"] == "G2" and r["g2_rel"] < 1e-6 for r in rep["trimlines"])
+    corner = V(1.5 * a - radius, 0.0, 0.5 * c - radius)  # the mitre's end: a fact
+    blends = [f for f in solid.Faces if not f.Surface.isPlanar(1e-6)
+              and f.distToShape(Part.Vertex(corner))[0] < 1e-9]
+    assert len(blends) == 2
+    mitre = [e for e in blends[0].Edges if any(e.isSame(x) for x in blends[1].Edges)]
+    assert len(mitre) == 1
+    end = min(mitre[0].Vertexes, key=lambda v: (v.Point - corner).Length)
+    assert (end.Point - corner).Length < 1e-9
+    assert 1e-6 < end.Tolerance <= assembly.MITRE_REACH * mitre[0].Length
+    # with that vertex's tolerance as it was, OCCT's BOP check finds the faces meeting
+    # beyond it
+    again = solid.copy()
+    v = next(v for v in again.Vertexes if (v.Point - corner).Length < 1e-9)
+    v.fixTolerance(1.5e-7)
+    assert v.Tolerance == 1.5e-7
+    assert bc.problems(again) == "Error in Face: BOPAlgo SelfIntersect (2)"
+
+
 def test_a_planar_b_spline_face_is_extensible_on_its_plane():
     """A 3 x 4 x 5 box with a hole r = 1 along z, made B-splines: each planar face, and
     its reverse, is the same face on its plane (recut.extensible), which a fillet's end
