@@ -27,8 +27,8 @@ C0_UNRELIABLE = ("BOPAlgo SelfIntersect", "BOPAlgo OperationAborted")
 CUSP = 1e-3
 CUSP_REACH = 0.05
 CUSP_BISECTIONS = 4  # of the doubling's last step: the least tolerance found to 2^(1/16)
-# where two blends meeting at a mitre still meet beyond its end, within this many times
-# the mitre's length, their vertex's tolerance may be raised to cover it
+# where the BOP check finds two blends meeting at a mitre interfering, their vertex's
+# tolerance may be raised up to this many times the mitre's length
 # (_tolerate_mitre_ends): 170 times the stretch seen (5.8e-6 of the mitre's length),
 # and below the cube root of the fits' accuracy relative to it (3e-8 to 8e-8, whose
 # cube roots are 3e-3 to 4e-3)
@@ -615,22 +615,23 @@ def _tolerate_cusps(solid, keep=frozenset()):
 
 
 def _tolerate_mitre_ends(solid, blended, keep=frozenset()):
-    """Raise the tolerance of each vertex at an end of a mitre (an edge that the faces
-    in `solid` of two blends of `blended` share) where the two faces still meet beyond
-    it, to twice the distance from the vertex to where they last meet, if that is at
-    most MITRE_REACH times the mitre's length. Vertices whose hashCode is in `keep`
-    (OCCT's result's, shared with the input) are left alone. Returns whether any
-    tolerance was raised.
+    """Where OCCT's BOP check finds the faces in `solid` of two blends of `blended`
+    that meet at a mitre (an edge they share) interfering, raise the tolerance of a
+    vertex at an end of the mitre, one after the other, doubling it until the check of
+    the two faces passes, up to MITRE_REACH times the mitre's length, then bisecting
+    the last step for the least that does (CUSP_BISECTIONS); else leave it as it was.
+    Vertices whose hashCode is in `keep` (OCCT's result's, shared with the input) are
+    left alone. Returns whether any tolerance was raised.
     Two blends meet at a mitre along their intersection. At its end on a face that
     both touch, both are tangent to that face, and to each other, to second order (G2
     contact): there their intersection is defined only to the cube root of the fits'
-    accuracy, and a stretch of it may run on beyond the vertex. OCCT's BOP check takes
-    that stretch for the faces self-intersecting. The case: a step block made
-    B-splines, the edges Edge13 and Edge14 of `tools/fillet_survey.py --random-edges
-    20 --seed 90 --splines`, part 11, with five others, at R = 2.146: the blends' faces
-    met 2.4e-5 beyond the mitre's end on the block's front face, with the vertex's
-    tolerance 1.2e-7 (test_workbench.py,
-    test_blends_meeting_beyond_their_mitre_have_its_end_tolerated)."""
+    accuracy, and the BOP check may find the faces meeting on beyond the vertex. The
+    cases (`tools/fillet_survey.py --random-edges 20 --seed 90 --splines`): part 10, a
+    step, 13 of its edges at R = 2.146: the blends' faces met 2.4e-5 beyond the
+    mitre's end on the front face, whose tolerance was 1.2e-7
+    (test_blends_meeting_beyond_their_mitre_have_its_end_tolerated); part 11, an
+    octagonal prism, 14 edges at R = 1.714: a vertical edge's blend and a bottom
+    edge's, the vertex's tolerance 1.3e-6, passing from 1e-5 on."""
     faces = [blend_face(solid, b) for b in blended]
     raised = False
     for i, a in enumerate(faces):
@@ -638,18 +639,33 @@ def _tolerate_mitre_ends(solid, blended, keep=frozenset()):
             mitres = [e for e in a.Edges if any(e.isSame(x) for x in b.Edges)]
             if not mitres:
                 continue
-            ends = [(v, MITRE_REACH * e.Length) for e in mitres for v in e.Vertexes
-                    if v.hashCode() not in keep]
-            for piece in a.section(b).Edges:
-                mid = piece.valueAt(0.5 * (piece.FirstParameter + piece.LastParameter))
-                if any(e.distToShape(Part.Vertex(mid))[0] <= e.Tolerance for e in mitres):
-                    continue  # along the mitre
-                reach = [(max((v.Point - w.Point).Length for w in piece.Vertexes), v, cap)
-                         for v, cap in ends]
-                far, v, cap = min(reach, key=lambda r: r[0]) if reach else (None,) * 3
-                if far is not None and far <= cap and 2.0 * far > v.Tolerance:
-                    v.fixTolerance(2.0 * far)
-                    raised = True
+            pair = Part.Compound([a, b])  # sharing solid's vertices: raised there too
+
+            def passes():
+                try:
+                    return bc.problems(pair, seconds=bc.NEAR_LIMIT) is None
+                except bc.Unfinished:
+                    return False
+            cap = MITRE_REACH * min(e.Length for e in mitres)
+            ends = [v for e in mitres for v in e.Vertexes if v.hashCode() not in keep]
+            for v in ends:
+                if passes():
+                    break
+                t0 = t = v.Tolerance
+                while 2.0 * t <= cap:
+                    t *= 2.0
+                    v.fixTolerance(t)
+                    if passes():  # the least that passes, to 2^(1/16), within (t / 2, t]
+                        lo = 0.5 * t
+                        for _ in range(CUSP_BISECTIONS):
+                            mid = math.sqrt(lo * t)
+                            v.fixTolerance(mid)
+                            lo, t = (lo, mid) if passes() else (mid, t)
+                        v.fixTolerance(t)
+                        raised = True
+                        break
+                else:
+                    v.fixTolerance(t0)
     return raised
 
 
