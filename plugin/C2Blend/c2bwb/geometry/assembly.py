@@ -29,9 +29,9 @@ CUSP_REACH = 0.05
 CUSP_BISECTIONS = 4  # of the doubling's last step: the least tolerance found to 2^(1/16)
 # where the BOP check finds two blends meeting at a mitre interfering, their vertex's
 # tolerance may be raised up to this many times the mitre's length
-# (_tolerate_mitre_ends): 170 times the stretch seen (5.8e-6 of the mitre's length),
-# and below the cube root of the fits' accuracy relative to it (3e-8 to 8e-8, whose
-# cube roots are 3e-3 to 4e-3)
+# (_tolerate_mitre_ends): 170 times the longest stretch seen (5.8e-6 of the mitre's
+# length), and below the cube root of the fits' accuracy relative to it (3e-8 to 8e-8,
+# whose cube roots are 3e-3 to 4e-3)
 MITRE_REACH = 1e-3
 
 
@@ -627,9 +627,9 @@ def _tolerate_mitre_ends(solid, blended, keep=frozenset()):
     contact): there their intersection is defined only to the cube root of the fits'
     accuracy, and the BOP check may find the faces meeting on beyond the vertex. The
     cases (`tools/fillet_survey.py --random-edges 20 --seed 90 --splines`): part 10, a
-    step, 13 of its edges at R = 2.146: the blends' faces met 2.4e-5 beyond the
-    mitre's end on the front face, whose tolerance was 1.2e-7
-    (test_blends_meeting_beyond_their_mitre_have_its_end_tolerated); part 11, an
+    step, 13 of its edges at R = 2.146: the vertex's tolerance 1.2e-7, passing from
+    4e-6 on (with 7 of those edges, the faces met 2.4e-5 beyond it;
+    test_blends_meeting_beyond_their_mitre_have_its_end_tolerated); part 11, an
     octagonal prism, 14 edges at R = 1.714: a vertical edge's blend and a bottom
     edge's, the vertex's tolerance 1.3e-6, passing from 1e-5 on."""
     faces = [blend_face(solid, b) for b in blended]
