@@ -18,9 +18,10 @@ from . import solve, recut
 
 UNCHECKED = "passes BRepCheck; BOP check skipped (preview)"  # the check line, bop=False
 C0_FINDING = "GeomAbs_C0"  # the BOP check's finding on geometry that is only C0
+INTERFERENCE = "BOPAlgo SelfIntersect"  # the BOP check's finding on faces that interfere
 # the BOP check's self-interference findings, which come and go on faces only C0
 # (_c0_unreliable)
-C0_UNRELIABLE = ("BOPAlgo SelfIntersect", "BOPAlgo OperationAborted")
+C0_UNRELIABLE = (INTERFERENCE, "BOPAlgo OperationAborted")
 # two edges of a face's wire leaving a vertex in directions this close (rad) form a cusp
 # there, whose tolerance may be raised (_tolerate_cusps) up to CUSP_REACH times the
 # shorter edge's length
@@ -233,7 +234,8 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         try:
             problems = bc.problems(solid, meanwhile=overlap, suspects=faces)
             overlap = None
-            if problems and _tolerate_mitre_ends(solid, blended, old_vertices):
+            if problems and INTERFERENCE in problems and \
+                    _tolerate_mitre_ends(solid, blended, old_vertices):
                 continue  # checked again
             line = "passes BRepCheck and the BOP check"
             break
