@@ -2678,13 +2678,14 @@ def test_blends_meeting_beyond_their_mitre_have_its_end_tolerated():
     the front face, which both blends touch G2. There their intersection is
     ill-conditioned (with 7 of these edges, the faces met 2.4e-5 beyond the mitre's
     vertex), and OCCT's BOP check found the solid self-intersecting ("BOPAlgo
-    SelfIntersect (2)"), the vertex's tolerance 1.2e-7: both blends and the two beyond
-    them were kept as OCCT's fillets. Now the vertex's tolerance is raised to the least
-    with which the check of the two faces passes (assembly._tolerate_mitre_ends: 4e-6),
-    within MITRE_REACH of the mitre's length. The result is valid and passes the BOP check. The fillets
-    kept are those at the top of the riser's back, where OCCT's own corner on these
-    B-spline faces has no tangent contact. With the mitre's vertex's tolerance set
-    back, the BOP check finds the self-intersection again."""
+    SelfIntersect (2)"), the vertex's tolerance 1.2e-7: both blends and two more were
+    kept as OCCT's fillets. Now the vertex's tolerance is raised to the least with
+    which the check of the two faces passes (assembly._tolerate_mitre_ends: 4e-6),
+    within MITRE_REACH of the mitre's length. The result is valid and passes the BOP
+    check. The fillets kept are the riser's three that reach its back (y = b), where
+    OCCT's own fillet of these B-spline faces leaves a face with no tangent contact
+    edge. With the mitre's vertex's tolerance set back, the BOP check finds the
+    self-intersection again."""
     s, edges, (a, b, c) = shapes.mitred_step()
     ns = s.toNurbs()  # the same edges, in the same order
     assert all(ns.getElement(n).distToShape(s.getElement(n))[0] < 1e-9 for n in edges)
@@ -2692,10 +2693,12 @@ def test_blends_meeting_beyond_their_mitre_have_its_end_tolerated():
     solid, rep = C2Blend.fillet_report(ns, edges, radius, label="Part")
     assert_valid(solid)
     assert rep["solid_check"] == "passes BRepCheck and the BOP check"
-    # kept: the riser's top back edge, and the concave edge and back edge below it
+    # kept: the riser's top edge, its back edge and the concave edge at its foot
     riser = [n for n, bb in ((n, s.getElement(n).BoundBox) for n in edges)
              if abs(bb.XMin - a) < 1e-9 and bb.XLength < 1e-9 and bb.YMax > b - 1e-9]
-    assert sorted(k["where"] for k in rep["kept_occt_faces"]) == sorted("Part." + n for n in riser)
+    assert len(riser) == 3
+    assert sorted(k["where"] for k in rep["kept_occt_faces"]) == \
+        sorted("Part." + n for n in riser)
     assert all(r["verdict"] == "G2" and r["g2_rel"] < 1e-6 for r in rep["trimlines"])
     corner = V(1.5 * a - radius, 0.0, 0.5 * c - radius)  # the mitre's end: a fact
     blends = [f for f in solid.Faces if not f.Surface.isPlanar(1e-6)
