@@ -851,9 +851,9 @@ def tall_l_block():
 def mitred_step():
     """A step: a 19.76 x 12.22 x 14.42 box and half of it beside it, half as high, to
     full precision (--random-edges 20 --seed 90, part 10). Returns (solid, names of 13
-    of its 18 edges, among them the lower step's front edge and the front vertical edge
-    below its end, whose fillets meet at a mitre, and first the three at the top of
-    the riser's back), and (a, b, c)."""
+    of its 18 edges in their order in the solid, which changes OCCT's fillet: among
+    them the lower step's front edge and the front vertical edge below its end, whose
+    fillets meet at a mitre), and (a, b, c)."""
     a, b, c = 19.76169051810392, 12.216377377779633, 14.423724133689285
     s = Part.makeBox(a, b, c).fuse(Part.makeBox(0.5 * a, b, 0.5 * c, V(a, 0, 0)))
     s = s.removeSplitter()
@@ -866,7 +866,8 @@ def mitred_step():
                                          (z, bb.ZMin, bb.ZMax)))
         return found
     wheres = [(a, None, 0.5 * c), (a, b, None), (a, None, c), (0.0, 0.0, None),
-              (0.0, None, c), (0.0, b, None), (0.0, None, 0.0), (None, 0.0, c), (a, 0.0, None), (None, 0.0, 0.5 * c), (1.5 * a, 0.0, None),
+              (0.0, None, c), (0.0, b, None), (0.0, None, 0.0), (None, 0.0, c),
+              (a, 0.0, None), (None, 0.0, 0.5 * c), (1.5 * a, 0.0, None),
               (1.5 * a, None, 0.0), (None, b, 0.0)]
     return s, sorted((_edge_named(s, at(*w)) for w in wheres), key=lambda n: int(n[4:])), \
         (a, b, c)
