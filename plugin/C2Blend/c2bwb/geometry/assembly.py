@@ -223,7 +223,6 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
         solid = closed()
     first = solid
     overlap = (lambda: meanwhile(first)) if meanwhile else None
-    old_vertices = {v.hashCode() for v in result.Vertexes}
     if not bop:
         problems, line = bc.problems(solid, bop=False, meanwhile=overlap), UNCHECKED
     while bop:
@@ -235,7 +234,8 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
             problems = bc.problems(solid, meanwhile=overlap, suspects=faces)
             overlap = None
             if problems and INTERFERENCE in problems and \
-                    _tolerate_mitre_ends(solid, blended, old_vertices):
+                    _tolerate_mitre_ends(solid, blended,
+                                         {v.hashCode() for v in result.Vertexes}):
                 continue  # checked again
             line = "passes BRepCheck and the BOP check"
             break
@@ -599,21 +599,12 @@ def _tolerate_cusps(solid, keep=frozenset()):
         cusps = [(v, cap) for v, cap in _cusps(f) if v.hashCode() not in keep]
         start = [v.Tolerance for v, _ in cusps]
 
-        def passes(t):  # with the cusps' tolerances t (within their caps), or as they were
+        def set_to(t):  # the cusps' tolerances t (within their caps), or as they were
             for (v, cap), t0 in zip(cusps, start):
                 v.fixTolerance(max(min(t, cap), t0))
-            return f.isValid()
-        t = 1e-6
-        while cusps and not f.isValid() and any(t < cap for _, cap in cusps):
-            t *= 2.0
-            if passes(t):  # the least that passes, to 2^(1/16), between t / 2 and t
-                lo = 0.5 * t
-                for _ in range(CUSP_BISECTIONS):
-                    mid = math.sqrt(lo * t)
-                    lo, t = (lo, mid) if passes(mid) else (mid, t)
-                passes(t)
-        if not f.isValid():
-            passes(0.0)
+        if not cusps or _least_passing(set_to, f.isValid, 1e-6,
+                                       lambda t: any(t < cap for _, cap in cusps)) is None:
+            set_to(0.0)
 
 
 def _tolerate_mitre_ends(solid, blended, keep=frozenset()):
@@ -653,22 +644,33 @@ def _tolerate_mitre_ends(solid, blended, keep=frozenset()):
             for v in ends:
                 if passes():
                     break
-                t0 = t = v.Tolerance
-                while 2.0 * t <= cap:
-                    t *= 2.0
-                    v.fixTolerance(t)
-                    if passes():  # the least that passes, to 2^(1/16), within (t / 2, t]
-                        lo = 0.5 * t
-                        for _ in range(CUSP_BISECTIONS):
-                            mid = math.sqrt(lo * t)
-                            v.fixTolerance(mid)
-                            lo, t = (lo, mid) if passes() else (mid, t)
-                        v.fixTolerance(t)
-                        raised = True
-                        break
-                else:
+                t0 = v.Tolerance
+                if _least_passing(v.fixTolerance, passes, t0,
+                                  lambda t: 2.0 * t <= cap) is None:
                     v.fixTolerance(t0)
+                else:
+                    raised = True
     return raised
+
+
+def _least_passing(set_to, passes, t, more):
+    """The least tolerance for which passes() holds once set_to(it) has set it, left
+    set: from t, doubled while more(t) until it passes, then the last step bisected
+    (CUSP_BISECTIONS) for the least that does, to 2^(1/16). None where none passes
+    before more(t) fails; the last one tried is then left set."""
+    def at(x):
+        set_to(x)
+        return passes()
+    while more(t):
+        t *= 2.0
+        if at(t):  # the least that passes lies in (t / 2, t]
+            lo = 0.5 * t
+            for _ in range(CUSP_BISECTIONS):
+                mid = math.sqrt(lo * t)
+                lo, t = (lo, mid) if at(mid) else (mid, t)
+            set_to(t)
+            return t
+    return None
 
 
 def _cusps(face):
