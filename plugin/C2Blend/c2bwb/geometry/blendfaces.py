@@ -15,7 +15,6 @@ from ..errors import C2BlendError, occt_message
 from . import check as ck
 from .bspline import fit_surface, solve_sampled
 from .inputs import check_params
-from .rollingball import period, snap
 from .solve import DATA_REL
 from .surface import frame_at_point
 from .trimlines import ROWS, pair_rows, spec_from_rows
@@ -33,6 +32,13 @@ class Trimline:
         if self.length <= 1e-9:
             raise C2BlendError("the edge has zero length", where)
         self.start, self.sense = 0.0, 1.0
+        mine = next(e for e in face.Edges if e.isSame(edge))
+        if mine.isSeam(face):
+            raise C2BlendError("the edge is the face's seam, where the surface closes on "
+                               "itself; select an edge bounding the face", where)
+        # the edge's sense in the face taken forward; the face lies to its left
+        self.forward = (mine.Orientation == "Forward") == (face.Orientation != "Reversed")
+        self.pcurve = face.curveOnSurface(edge)
 
     def param(self, s):
         """Edge parameter at normalised arc length s in [0, 1] from the start, to 1e-12 of
@@ -45,26 +51,24 @@ class Trimline:
             a = 1.0
         return self.edge.getParameterByLength(a * self.length, 1e-12 * self.length)
 
-    def outward(self, frame, tangent):
-        """Unit tangent of the face at the frame's point (on the edge), perpendicular to
-        the edge, pointing out of the face across the edge: towards the side that the
-        face's domain does not hold, tested in its parameter plane. (Offset in space and
-        projected back, a point beyond the edge of a B-spline face that ends there, as a
-        cylinder's face made a B-spline by toNurbs, was put on the edge, which the domain
-        holds: the direction flipped at some samples, and the blend's fit failed.)"""
+    def outward(self, frame, tangent, t):
+        """Unit tangent of the face at the frame's point (the edge's point at parameter
+        t), perpendicular to the edge, pointing out of the face across the edge. A face
+        lies to the left of its edges' curves in its parameter plane, each run in the
+        edge's sense in the face taken forward (OCCT's convention), so the side is read
+        from the edge's curve on the face, exactly. (A domain test, isPartOfDomain,
+        classifies against polygons of those curves: a point 2.4e-6 beyond the rim of
+        a disc of radius 3.8e-3 made a B-spline, where the rim touches the patch's
+        border, was held inside on both sides, and the direction flipped there.)"""
         d = frame.n.cross(tangent)
         d.normalize()
         a, b = frame.coords(d)
-        eps = 1e-4 * max(self.length, 1e-3)
-        (u0, u1, v0, v1), s = self.face.ParameterRange, self.face.Surface
-        # a projection may return a parameter a period away (u = 2 pi at the corner
-        # u = 0 of a sphere zone swept 120 degrees, where both sides then lay outside)
-        u, v = snap(frame.u, u0, u1, period(s, 0)), snap(frame.v, v0, v1, period(s, 1))
-        ahead = self.face.isPartOfDomain(u + eps * a, v + eps * b)
-        if ahead != self.face.isPartOfDomain(u - eps * a, v - eps * b):
-            return -d if ahead else d
-        u, v = self.face.Surface.parameter(frame.p - d * eps)  # both sides or neither
-        return d if self.face.isPartOfDomain(u, v) else -d
+        c2d, lo, hi = self.pcurve
+        e = self.edge
+        g = c2d.tangent(lo + (t - e.FirstParameter) / (e.LastParameter - e.FirstParameter)
+                        * (hi - lo))
+        right = a * g.y - b * g.x  # (a, b) . (g.y, -g.x): towards the right of the curve
+        return d if (right > 0.0) == self.forward else -d
 
 
 def align(t1, t2):
@@ -123,7 +127,7 @@ def blend(face1, edge1, face2, edge2, continuity="C2", shape_params=(1.0, 1.0, 1
             p1, p2 = edge1.valueAt(a), edge2.valueAt(b)
             g1, g2 = edge1.tangentAt(a), edge2.tangentAt(b)
             f1, f2 = frame_at_point(face1, p1), frame_at_point(face2, p2)
-            return f1, g1, t1.outward(f1, g1), f2, g2, t2.outward(f2, g2)
+            return f1, g1, t1.outward(f1, g1, a), f2, g2, t2.outward(f2, g2, b)
         fractions = (k / n if t1.closed else k / (n - 1) for k in range(n))
         return pair_rows((pair(s) for s in fractions), nrows, tension, where)
 
