@@ -1098,6 +1098,26 @@ def test_blend_faces_leave_a_disc_made_a_b_spline_across_its_rim(k):
         C2Blend.blend(disc, rim, tube, seam)
 
 
+def test_the_check_of_faces_apart_finds_one_folding_back_over_the_other():
+    """Faces not yet in one shell (a blend face and its primary) are compared with one
+    flip of the primary's normal for the whole trimline, not one per point: a flat
+    strip S(u, v) = (-u (v - 0.3), v, 0) leaves the plane x >= 0 across its edge x = 0
+    for v > 0.3, and folds back over it for v < 0.3 (S_u turns through zero at 0.3),
+    where its normal is turned by pi. Flipped point by point, the fold read G2; the
+    same strip with S_u never zero, or the plane reversed, is G2."""
+    plane = Part.makePlane(1, 2, V(0, -0.5, 0))
+    for fold, verdict in ((0.3, "G0"), (-0.5, "G2")):
+        s = Part.BSplineSurface()
+        s.buildFromPolesMultsKnots([[V(), V(0, 1, 0)], [V(fold, 0, 0), V(fold - 1, 1, 0)]],
+                                   [2, 2], [2, 2], [0, 1], [0, 1], False, False, 1, 1)
+        assert s.getDN(0, 0.2, 1, 0).x == pytest.approx(0.1 if fold > 0 else -0.7)
+        for other in (plane, plane.reversed()):
+            r = ck.compare(Part.Face(s), other, ck.trimline_points(s, 0.0, n=100), 2.0,
+                           oriented=False)
+            assert r["verdict"] == verdict and r["g0"] < 1e-12
+            assert r["g1"] == (pytest.approx(math.pi) if fold > 0 else 0.0)
+
+
 def test_blend_faces_moved_anywhere_give_the_moved_blend():
     """Open trimlines (a sphere zone and a cylinder swept 120 degrees) moved by 18
     rotations, and by a placement of tools/blend_survey.py (--seed 1, pair 2), give the

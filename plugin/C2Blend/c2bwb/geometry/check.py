@@ -133,18 +133,25 @@ def compare(fa, fb, points, diag, tol_g0=TOL_G0, oriented=True, scales=None):
     (then it is projected, starting from the previous point's parameters): worst g0, g1,
     g2, g2_rel, dk and a verdict (see the module doc; diag is the shape's diagonal).
     oriented=False compares faces that are not yet in one shell: their normals may be
-    opposite, so fb's normal is flipped where it faces away from fa's. scales: a dict
-    shared by the comparisons of one report, where each face's curvature scale is kept."""
+    opposite, so fb's normal is flipped along the whole boundary where most of it faces
+    away from fa's. scales: a dict shared by the comparisons of one report, where each
+    face's curvature scale is kept."""
     tol_g0 = max(tol_g0, TOL_G0_REL * diag)
     k_scale = max(1.0 / diag, _scale(fa, scales), _scale(fb, scales))
     worst = {"g0": 0.0, "g1": 0.0, "g2": 0.0, "g2_rel": 0.0, "dk": 0.0}
     ka_max = kb_max = 0.0
     ga = gb = None  # each projection starts from the previous point's (points are in order)
+    frames = []
     for p, tangent, uv in points:
         a = frame_at_point(fa, p, ga) if uv is None else Frame(fa, *uv)
         b = frame_at_point(fb, a.p, gb)
         ga, gb = (a.u, a.v), (b.u, b.v)
-        if not oriented and a.n.dot(b.n) < 0:
+        frames.append((a, b, tangent))
+    # one flip for the whole boundary, as most of it has it: where a face folds back over
+    # the other (its cross derivative turns through zero), its normal turns there
+    flip = not oriented and sum(a.n.dot(b.n) for a, b, _ in frames) < 0
+    for a, b, tangent in frames:
+        if flip:
             b.n = -b.n
         d = a.n.cross(tangent)
         d.normalize()
