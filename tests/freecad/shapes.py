@@ -1084,8 +1084,8 @@ def nurbs_sphere_through_plate(turn):
 
 def nurbs_sphere_on_its_side(axis="y"):
     """nurbs_sphere_through_plate, but the sphere turned by 90 degrees about the x or y
-    `axis` (its poles at z = 7). The BOP check finds a self-intersection on this input
-    besides its C0 geometry (and, about x, curves off their faces). Returns (solid,
+    `axis` (its poles at z = 7). About x, the BOP check finds a self-intersection on
+    this input besides its C0 geometry. Returns (solid,
     names of the junction edges at z = 5: two about y, where the junction crosses the
     sphere's seam, one about x)."""
     sphere = Part.Solid(Part.Shell(Part.makeSphere(5, V(0, 0, 7)).Faces[0].toNurbs().Faces))
@@ -1308,3 +1308,27 @@ def rounded_plate(r=0.3):
     s = s.makeFillet(r, [e for e in s.Edges if e.BoundBox.ZLength > 1])
     return s, _edge_named(s, lambda e: e.BoundBox.ZMin > 6 - 1e-9 and e.BoundBox.YMax < 1e-9
                           and e.BoundBox.XLength > 1)
+
+
+def off_curve_block():
+    """A 25.32 x 25.40 x 13.81 block with a through hole (r = 2.906) and a slot, to full
+    precision, made B-splines (--random-machined 40 --seed 96 --splines, part 38). The
+    top face's edge curves lie off it between BRepCheck's samples: BRepCheck passes,
+    OCCT's BOP check finds BOPAlgo_InvalidCurveOnSurface on that face, alone too.
+    Returns (solid, its top face's name, the name of its bottom edge at x = 0)."""
+    a, b, c = 25.319119937043713, 25.40040128168709, 13.806562350778957
+    s = Part.makeBox(a, b, c)
+    s = s.cut(Part.makeCylinder(2.906233942372771, c + 2,
+                                V(10.417930020442586, 8.822345820829911, -1))).removeSplitter()
+    r, x, y = 4.325544314073051, 12.007681635950414, 7.636227622914863
+    w, length, depth = 0.5 * r, 0.8175662529621524 * r, 0.6743093050570319 * c
+    tool = Part.makeBox(length, 2 * w, depth + 1, V(x - 0.5 * length, y - w, c - depth))
+    for end in (-0.5, 0.5):
+        tool = tool.fuse(Part.makeCylinder(w, depth + 1, V(x + end * length, y, c - depth)))
+    s = s.cut(tool).removeSplitter().toNurbs()
+    s = s.Solids[0] if s.ShapeType != "Solid" else s
+    top = next(k for k, f in enumerate(s.Faces) if f.BoundBox.ZLength < 1e-9
+               and abs(f.BoundBox.ZMin - c) < 1e-9)
+    edge = _edge_named(s, lambda e: e.BoundBox.XLength < 1e-9 and e.BoundBox.XMin < 1e-9
+                       and e.BoundBox.ZLength < 1e-9 and e.BoundBox.ZMin < 1e-9)
+    return s, "Face%d" % (top + 1), edge

@@ -258,6 +258,10 @@ def assemble(shape, result, blended, fillet_faces, where, patches=(), bop=True,
     if inherited:
         problems, line = None, inherited
     blocks = orig if not c0_input else None
+    kept = _input_faults_kept(problems, orig, solid, shape, tol) if problems and blocks \
+        and bop else None
+    if kept:
+        problems, line = None, kept
     rejected = _rejected_faces(solid, blended, fills, shape) if problems else []
     if rejected:
         # FreeCAD's message then lists its faces' own statuses ("No error"), not those
@@ -398,6 +402,44 @@ def _inherited(problems, orig, solid, unreliable=()):
                     ", ".join("face %s" % ck.element_name(solid, f, "Face")
                               for f, _ in unreliable)))
     return line + ": Boolean operations on those faces may fail"
+
+
+def _input_faults_kept(problems, orig, solid, shape, tol):
+    """The report's line when the input solid `shape` fails the BOP check beyond C0
+    geometry (`orig`, its findings) and the filleted solid's findings (`problems`) are
+    the input's, kept: BRepCheck passes; no kind of finding is more frequent than on
+    the input (but C0 geometry, where the input has it: faces cut anew multiply it);
+    every kind beyond C0 is found on faces checked alone; and each such face is a
+    piece of an input face that the check, alone, finds faulty too (so no blend or
+    plate filling is). The case: a block made B-splines whose face's edge curves lie
+    off it between BRepCheck's samples (BOPAlgo_InvalidCurveOnSurface), which OCCT's
+    own fillet keeps too (shapes.off_curve_block). None otherwise: the fillet's error
+    then names the input's findings."""
+    if bc.problems(solid, bop=False) is not None:
+        return None
+    theirs, c0 = _counts(orig), C0_FINDING in orig
+    mine = {k: n for k, n in _counts(problems).items() if not (c0 and k.endswith(C0_FINDING))}
+    if any(n > theirs.get(k, 0) for k, n in mine.items()):
+        return None
+    try:
+        faulty = [f for f in shape.Faces if _faults_alone(f)]
+        kept = [(f, k) for f, k in ((f, _faults_alone(f)) for f in solid.Faces) if k]
+    except bc.Unfinished:
+        return None
+    if not kept or not all(recut.piece_of(f, faulty, tol) for f, _ in kept) or \
+            not set(mine) <= {x for _, k in kept for x in k}:
+        return None
+    return ("passes BRepCheck; the BOP check finds %s, as in the input solid (%s): "
+            "beyond C0 geometry, on faces kept from its %s, which the check finds "
+            "faulty alone too: repair the input for Boolean operations on them"
+            % (problems, orig, ", ".join(ck.element_name(shape, f, "Face") for f in faulty)))
+
+
+def _faults_alone(face):
+    """The kinds of finding beyond C0 geometry (as in _counts) of the BOP check of
+    `face` alone. Raises bopcheck.Unfinished."""
+    found = bc.problems(face, bc.NEAR_LIMIT)
+    return [k for k in _counts(found) if not k.endswith(C0_FINDING)] if found else []
 
 
 def _as_occt_fillet(problems, solid, result):

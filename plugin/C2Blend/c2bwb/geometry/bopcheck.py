@@ -15,7 +15,8 @@ use and kept for the next checks, which is killed when a check passes its time l
 (the next check starts a new one). A forked child of this process will not do: OCCT's
 thread pool (OSD_ThreadPool), once used here, has no threads in a child, which then
 waits for them for ever. The server is a fresh Python that imports FreeCAD (0.1 to
-0.6 s, once); a shape goes to it as BREP text (a box with 26 faces: 1.1 MB, 25 ms).
+0.6 s, once); a shape goes to it by a file in OCCT's binary format, which is exact
+where BREP text rounds.
 
 Where the loop is, a check of the face's neighbourhood loops too. A check of a filleted
 solid that runs long is therefore watched by a second server, which checks the
@@ -263,14 +264,25 @@ class _Server:
         self.buffer = b""  # the part of an answer read so far
         self.started = (time.monotonic(), None)  # (clock, processor time) at the last send
         self.filleted = None  # the shape of the last fillet request (held: its id stays)
-        self.folder = None  # where that shape is written for the server to read
+        self.folder = None  # where shapes are written for the server to read
 
     def send(self, shape):
-        """Start checking shape. Raises OSError when the server has ended."""
-        data = shape.exportBrepToString().encode()
+        """Start checking shape, which goes in OCCT's binary format, by a file: BREP text
+        writes edges' parameter ranges to 15 digits, and the check found
+        BOPAlgo_InvalidCurveOnSurface on a block made B-splines read back from it that
+        the block itself has not (shapes.off_curve_block). Raises OSError when the
+        server has ended."""
+        path = os.path.join(self._folder(), "check.brp")
+        shape.exportBinary(path)
         self.started = (time.monotonic(), _cpu(self.proc.pid))
-        self.proc.stdin.write(b"%d\n" % len(data) + data)
+        self.proc.stdin.write(("check %s\n" % path).encode())
         self.proc.stdin.flush()
+
+    def _folder(self):
+        """The folder of the files sent to the server, made on first use."""
+        if self.folder is None:
+            self.folder = tempfile.mkdtemp(prefix="c2blend-server-")
+        return self.folder
 
     def fillet(self, shape, radius, indices):
         """Start filleting the edges `indices` (0-based, of shape.Edges) of shape at
@@ -280,9 +292,7 @@ class _Server:
         solid read back from BREP text. Raises OSError when the server has ended."""
         path = "-"
         if shape is not self.filleted:
-            if self.folder is None:
-                self.folder = tempfile.mkdtemp(prefix="c2blend-trial-")
-            path = os.path.join(self.folder, "shape.brp")
+            path = os.path.join(self._folder(), "shape.brp")
             shape.exportBinary(path)
             self.filleted = shape
         self.started = (time.monotonic(), _cpu(self.proc.pid))

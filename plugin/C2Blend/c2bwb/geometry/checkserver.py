@@ -3,8 +3,8 @@
 bopcheck with FreeCAD's library folder as its argument (it imports no C2Blend module).
 
 It reads requests from stdin and answers each with one line of JSON on its stdout:
-- a line with a byte count followed by that many bytes of BREP text: it checks the shape
-  (TopoShape.check(True)) and answers {"found": null} when the shape passes,
+- a line "check PATH", PATH a file holding a shape in OCCT's binary format: it checks
+  the shape (TopoShape.check(True)) and answers {"found": null} when the shape passes,
   {"found": "..."} with OCCT's findings otherwise;
 - a line "fillet RADIUS I,J,... PATH", PATH a file holding a shape in OCCT's binary
   format ("-": the shape of the last such request): it fillets the shape's edges I, J,
@@ -30,7 +30,8 @@ def main():
     filleted = None  # the shape of the last fillet request
 
     while True:
-        words = requests.readline().strip().split(maxsplit=3)
+        line = requests.readline().strip()
+        words = line.split(maxsplit=3)
         if not words:
             answers.flush()
             os._exit(0)
@@ -45,7 +46,7 @@ def main():
                     "the result is not a valid solid"
             else:
                 shape = Part.Shape()
-                shape.importBrepFromString(requests.read(int(words[0])).decode())
+                shape.importBinary(line.split(maxsplit=1)[1].decode())
                 shape.check(True)
                 found = None
         except Exception as ex:  # noqa: BLE001 - OCCT reports findings as an exception
