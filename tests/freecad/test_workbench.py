@@ -2444,10 +2444,10 @@ def _plane_cut_findings(face, z):
 def test_self_interference_on_a_c0_face_is_not_taken_for_a_fault(monkeypatch):
     """A sphere converted by toNurbs() through a plate, turned 45 degrees: the input
     fails the BOP check for C0 geometry, and for "SelfIntersect" on the sphere's face,
-    the unreliable finding below, which counts as C0 geometry. Its face is cut along the blend of the
-    junction (R = 1) with the trimline started where it crosses the face's seam: the
-    fillet is G2 and the BOP check finds C0 geometry (and, depending on the blend's last
-    bits, "SelfIntersect" as below). Cut with the trimline
+    the unreliable finding below, which counts as C0 geometry. Its face is cut along
+    the blend of the junction (R = 1) with the trimline started where it crosses the
+    face's seam: the fillet is G2 and the BOP check finds C0 geometry (and, depending on
+    the blend's last bits, "SelfIntersect" as below). Cut with the trimline
     started half a period on (as before that was tried first), the sphere's face also
     gets "SelfIntersect" from the BOP check. That test is unreliable on such faces: it
     reports the same on the sphere's surface cut by the plane z = 5.5 with OCCT's own
