@@ -14,14 +14,16 @@ processor and clock time of OCCT's BOP check on a filleted pentagonal prism and 
 plate fillings' neighbourhoods, which bopcheck's time limits allow for. With --only
 TEXT, the handful of typical parts is cut down to those whose name contains TEXT (to
 time them). With --turned, each random part is turned and moved to a random placement
-first; with --splines, made B-splines (toNurbs) first. With --sweep R1,R2,..., every
+first; with --splines, made B-splines (toNurbs) first; with --read-back, each result is
+also written to a STEP file and saved in a FreeCAD document, read back from each, and
+checked again (OCCT's BOP check). With --sweep R1,R2,..., every
 edge alone of nine plain parts (pockets, a step, a bracket, a boss on a wall, slots,
 ribs) at each radius; with --pairs too, every two edges that meet at a vertex.
 
 usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
        [--validation] [--only TEXT] [--all-edges]
        [--random N | --random-edges N | --random-machined N | --random-shafts N |
-        --random-plates N [--seed S] [--turned] [--splines] |
+        --random-plates N [--seed S] [--turned] [--splines] [--read-back] |
         --sweep R1,R2,... [--pairs]]
        [--bop-times]
 """
@@ -510,10 +512,13 @@ def splines(make):
     return made
 
 
-def random_survey(count, seed, make=random_part):
+def random_survey(count, seed, make=random_part, read_back=False):
     """Fillet `count` random parts (make(rng), seeded): lists those where a trimline is
     not G2, a fillet is kept as OCCT's, the solid is not valid or does not pass the
-    BOP check, and the errors (as where OCCT's own fillet fails), then the totals."""
+    BOP check, and the errors (as where OCCT's own fillet fails), then the totals. With
+    read_back, each result is also read back from a STEP file and a FreeCAD document
+    (read_back_faults), and the outcome says what the check finds beyond the result's
+    own findings."""
     import random
     rng = random.Random(seed)
     totals = {}
@@ -522,7 +527,7 @@ def random_survey(count, seed, make=random_part):
         if len(s.Solids) != 1 or not edges:
             outcome = "skipped (no single solid, or no edge)"
         else:
-            outcome = tried("%d %s" % (k, kind), s, edges, r)
+            outcome = tried("%d %s" % (k, kind), s, edges, r, read_back)
         totals[outcome] = totals.get(outcome, 0) + 1
     print_totals(totals)
 
@@ -530,9 +535,11 @@ def random_survey(count, seed, make=random_part):
 GOOD = "G2 at every trimline, nothing kept as OCCT's, valid, passes the BOP check"
 
 
-def tried(what, s, edges, r):
+def tried(what, s, edges, r, read_back=False):
     """The outcome of C2 Fillet of `edges` of s at radius r: GOOD, "other" or "error";
-    prints a line saying what, unless GOOD within 10 s."""
+    prints a line saying what, unless GOOD within 10 s. With read_back, the outcome also
+    names each form (STEP, FCStd) read back from which the solid has findings it has not
+    (read_back_faults), and a line says what they are."""
     try:
         t0 = time.perf_counter()
         solid, rep = C2Blend.fillet_report(s, edges, r)
@@ -550,7 +557,49 @@ def tried(what, s, edges, r):
         print("%s, %d edge(s), R=%g: %s%s, %s, %.1f s; %s"
               % (what, len(edges), r, rep["verdict"], seam, rep["solid_check"], seconds,
                  "; ".join(sorted({x["reason"] for x in kept}))))
-    return GOOD if ok else "other"
+    outcome = GOOD if ok else "other"
+    if read_back:
+        faults = read_back_faults(solid)
+        for form, found in faults:
+            print("%s, %d edge(s), R=%g: read back from %s: %s"
+                  % (what, len(edges), r, form, found))
+        outcome += "; read back from %s: new findings" % " and ".join(
+            form for form, _ in faults) if faults else "; read back: no new findings"
+    return outcome
+
+
+def read_back_faults(solid):
+    """[(form, findings)]: each form ("STEP", "FCStd") that `solid`, written to a STEP
+    file (exportStep) or saved in a FreeCAD document and read back, fails the validity
+    checks in: isValid(), or a kind of finding of the BOP check (bopcheck.problems) that
+    the solid itself has not, with the findings."""
+    from c2bwb.geometry import bopcheck as bc
+    def checked(shape):  # the findings, or why the check did not finish
+        try:
+            return bc.problems(shape)
+        except bc.Unfinished as ex:
+            return "the check did not finish: %s" % ex
+    def kinds(found):
+        return {x.split(" (")[0] for x in found.split("; ")} if found else set()
+    own = kinds(checked(solid))
+    out = []
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "result.step")
+        solid.exportStep(path)
+        forms = [("STEP", Part.read(path))]
+        doc = FreeCAD.newDocument("ReadBack")
+        doc.addObject("Part::Feature", "Result").Shape = solid
+        path = os.path.join(folder, "result.FCStd")
+        doc.saveAs(path)
+        FreeCAD.closeDocument(doc.Name)
+        doc = FreeCAD.openDocument(path)
+        forms.append(("FCStd", doc.getObject("Result").Shape.copy()))
+        FreeCAD.closeDocument(doc.Name)
+    for form, shape in forms:
+        found = checked(shape)
+        if not shape.isValid() or kinds(found) - own:
+            out.append((form, ("not valid; " if not shape.isValid() else "") + str(found)))
+    return out
 
 
 def print_totals(totals):
@@ -672,6 +721,9 @@ def main():
                     help="each random part turned and moved to a random placement")
     ap.add_argument("--splines", action="store_true",
                     help="each random part made B-splines (toNurbs) first")
+    ap.add_argument("--read-back", action="store_true",
+                    help="each random part's result also written to STEP and to a FreeCAD "
+                    "document, read back and checked again")
     ap.add_argument("--sweep", metavar="R1,R2,...",
                     help="instead, fillet every edge alone of nine plain parts at each radius")
     ap.add_argument("--pairs", action="store_true",
@@ -686,7 +738,7 @@ def main():
                         (a.random_machined, random_machined), (a.random_shafts, random_shaft),
                         (a.random_plates, random_plate)):
         if count:
-            random_survey(count, a.seed, place(make))
+            random_survey(count, a.seed, place(make), a.read_back)
             return
     if a.sweep:
         sweep([float(r) for r in a.sweep.split(",")], a.pairs)

@@ -1669,8 +1669,8 @@ def test_invalid_input_is_named_when_the_result_fails_the_check():
 
 def test_an_input_read_back_from_brep_text_keeps_its_faults_and_is_filleted(monkeypatch):
     """A block made B-splines (shapes.off_curve_block) passes the BOP check but for its
-    C0 geometry. Written to BREP text and read back, as a FreeCAD document saved and
-    opened again stores it, its edges' parameter ranges keep 15 digits, and the check
+    C0 geometry. Written to BREP text and read back, as a BREP file stores it (and a
+    STEP file changes it so too), its edges' parameter ranges keep 15 digits, and the check
     finds BOPAlgo_InvalidCurveOnSurface on one face, checked alone too. (The check
     server got its shapes as BREP text, and so found that on the block itself.) The
     fillet of an edge away from that face is G2 and valid; the report says the BOP
@@ -3124,6 +3124,58 @@ def test_saved_document_reopens_and_recomputes(tmp_path):
     FreeCAD.closeDocument(doc.Name)
 
 
+def _read_back(shape, form, folder):
+    """shape saved in a FreeCAD document and opened again (form "FCStd"), or written to
+    a STEP or BREP file (exportStep, exportBrep) and read back (Part.read)."""
+    path = str(folder / ("read_back." + form.lower()))
+    if form != "FCStd":
+        (shape.exportStep if form == "STEP" else shape.exportBrep)(path)
+        return Part.read(path)
+    doc = FreeCAD.newDocument("ReadBack")
+    doc.addObject("Part::Feature", "Result").Shape = shape
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    out = doc.getObject("Result").Shape.copy()
+    FreeCAD.closeDocument(doc.Name)
+    return out
+
+
+def test_a_document_keeps_a_fillet_as_checked_and_files_may_not(tmp_path):
+    """FreeCAD 0.20 saves a document's shapes as BREP text with a fixed count of
+    decimals (15 for an edge's range), so a fillet saved and opened again passes the
+    BOP check as it did. A BREP file keeps 15 significant digits of an edge's range:
+    read back from one, the box filleted at tension 1e-6 (G1, its blend nearly
+    degenerate at its trimlines) has invalid edge ranges, and a block made B-splines
+    (shapes.off_curve_block, only C0 to the check) a curve off a face. A STEP file
+    keeps no tolerances, and OCCT's reader gives each edge the deviation it samples
+    between its curves: the plate filling at each of the 8 corners of a box with its 12
+    edges filleted, whose seam with each of its 3 blends is about 1e-6 off
+    (corners.py), then has curves off its face on all 24 seams. A box with one edge
+    filleted reads back from either file as checked."""
+    box = shapes.box()
+    one = C2Blend.fillet(box, ["Edge1"], 2.0)
+    thin, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, tension=1e-6)
+    assert rep["verdict"] == "G1"
+    corners, rep = C2Blend.fillet_report(box, ["Edge%d" % i for i in range(1, 13)], 2.0)
+    assert len(rep["corner_patches"]) == 8
+    assert all(1e-7 < c["g0"] < 1e-5 for c in rep["corner_patches"])
+    block, _, _ = shapes.off_curve_block()
+    c0 = bc.problems(block)
+    assert assembly._input_only_c0(block, c0)
+    for solid in (one, thin, corners):
+        assert bc.problems(solid) is None
+        assert bc.problems(_read_back(solid, "FCStd", tmp_path)) is None
+    assert bc.problems(_read_back(block, "FCStd", tmp_path)) == c0
+    for form in ("STEP", "BREP"):
+        assert bc.problems(_read_back(one, form, tmp_path)) is None
+    assert "Invalid range" in bc.problems(_read_back(thin, "BREP", tmp_path))
+    assert "InvalidCurveOnSurface" in bc.problems(_read_back(block, "BREP", tmp_path))
+    found = bc.problems(_read_back(corners, "STEP", tmp_path))
+    assert found == ("Error in Edge: BOPAlgo_InvalidCurveOnSurface (24); "
+                     "Error in Face: BOPAlgo_InvalidCurveOnSurface (24)"), found
+
+
 def test_c1_and_c3_fillets():
     """C1 data match tangents only: the check must find the curvature jump (G1), which
     shows it can fail on our own blends. C3 data add the third derivative: G2 or better."""
@@ -3241,8 +3293,8 @@ def test_a_vanishing_tension_names_only_the_faults():
     """At tension 1e-6 the blend's end speed across the trimlines is 1e-6 R sqrt 2 on the
     box edge (trimlines.py), so the blend face nearly degenerates there: the solid
     passes BRepCheck and the BOP check, but the blend is G1 only. Written to BREP text
-    and read back, as a FreeCAD document stores it, its edges' ranges keep 15 digits,
-    and OCCT's check finds invalid edge ranges (sent to the check as BREP text, the
+    and read back, as a BREP file stores it, its edges' ranges keep 15 digits, and
+    OCCT's check finds invalid edge ranges (sent to the check as BREP text, the
     solid itself was taken to have them, and OCCT's face was kept). FreeCAD lists the
     clean sub-shapes as "No error" beside the faulty ones: the line said "Invalid
     range (2); No error (8)". It names only the faults."""
