@@ -539,7 +539,8 @@ def tried(what, s, edges, r, read_back=False):
     """The outcome of C2 Fillet of `edges` of s at radius r: GOOD, "other" or "error";
     prints a line saying what, unless GOOD within 10 s. With read_back, the outcome also
     names each form (STEP, FCStd) read back from which the solid has findings it has not
-    (read_back_faults), and a line says what they are."""
+    (read_back_faults), and whether OCCT's own fillet of the same edges has them in the
+    same forms; a line says what they are."""
     try:
         t0 = time.perf_counter()
         solid, rep = C2Blend.fillet_report(s, edges, r)
@@ -560,11 +561,18 @@ def tried(what, s, edges, r, read_back=False):
     outcome = GOOD if ok else "other"
     if read_back:
         faults = read_back_faults(solid)
+        theirs = read_back_faults(s.makeFillet(r, [s.getElement(e) if isinstance(e, str)
+                                                   else e for e in edges])) if faults else []
         for form, found in faults:
-            print("%s, %d edge(s), R=%g: read back from %s: %s"
-                  % (what, len(edges), r, form, found))
-        outcome += "; read back from %s: new findings" % " and ".join(
-            form for form, _ in faults) if faults else "; read back: no new findings"
+            print("%s, %d edge(s), R=%g (%d corners filled, %d seams): read back from %s: "
+                  "%s; OCCT's own fillet: %s"
+                  % (what, len(edges), r, len(corners), sum(c["edges"] for c in corners),
+                     form, found, dict(theirs).get(form, "no new findings")))
+        outcome += "; read back: no new findings" if not faults else \
+            "; read back from %s: new findings%s" % (
+                " and ".join(form for form, _ in faults),
+                ", as from OCCT's own fillet" if [f for f, _ in faults] == [f for f, _ in theirs]
+                else ", not all from OCCT's own fillet")
     return outcome
 
 
