@@ -1354,6 +1354,29 @@ def boxdoc():
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_c2blend_may_be_a_scripts_first_import(tmp_path):
+    """FreeCAD 0.20's Part library ends the interpreter with a segmentation fault when it
+    is loaded before FreeCAD's own, and every geometry module imports Part: a script
+    outside FreeCAD beginning `import C2Blend`, as the README's scripting example
+    does, died so (return code -11). The package loads FreeCAD first. Part alone
+    still crashes (FreeCAD's own behaviour), which shows the test can fail."""
+    import subprocess
+    import sys
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    env = dict(os.environ, HOME=str(tmp_path), PYTHONPATH=os.pathsep.join(
+        ["/usr/lib/freecad-python3/lib", os.path.join(root, "plugin", "C2Blend"),
+         os.environ.get("C2B_MODULE_DIR", "")]))
+    code = ("import C2Blend, Part; rep = C2Blend.fillet_report(Part.makeBox(10, 10, 10), "
+            "['Edge1'], 2.0)[1]; print(rep['verdict'])")
+    run = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                         text=True, timeout=300)
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert run.stdout.split()[-1] == "G2"
+    alone = subprocess.run([sys.executable, "-c", "import Part"], env=env,
+                           capture_output=True, timeout=300)
+    assert alone.returncode == -signal.SIGSEGV
+
+
 def test_face_instead_of_edge(boxdoc):
     doc, box = boxdoc
     before = shapes.document_state(doc)
