@@ -1359,7 +1359,7 @@ def test_c2blend_may_be_a_scripts_first_import(tmp_path):
     is loaded before FreeCAD's own, and every geometry module imports Part: a script
     outside FreeCAD beginning `import C2Blend`, as the README's scripting example
     does, died so (return code -11). The package loads FreeCAD first. Part alone
-    still crashes (FreeCAD's own behaviour), which shows the test can fail."""
+    still crashes (FreeCAD's own behaviour), which shows the crash is there to avoid."""
     import subprocess
     import sys
     root = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -1374,7 +1374,10 @@ def test_c2blend_may_be_a_scripts_first_import(tmp_path):
     assert run.stdout.split()[-1] == "G2"
     alone = subprocess.run([sys.executable, "-c", "import Part"], env=env,
                            capture_output=True, timeout=300)
-    assert alone.returncode == -signal.SIGSEGV
+    # (under AddressSanitizer, which the environment may preload, it reports the SEGV
+    # and exits with 1)
+    assert alone.returncode == -signal.SIGSEGV or (
+        alone.returncode != 0 and b"AddressSanitizer: SEGV" in alone.stderr), alone
 
 
 def test_face_instead_of_edge(boxdoc):
