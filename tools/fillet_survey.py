@@ -30,6 +30,7 @@ usage: C2B_MODULE_DIR=build/plugin/ext /usr/bin/python3 tools/fillet_survey.py
 import argparse
 import math
 import os
+import pathlib
 import statistics
 import sys
 import tempfile
@@ -592,17 +593,8 @@ def read_back_faults(solid):
     own = kinds(checked(solid))
     out = []
     with tempfile.TemporaryDirectory() as folder:
-        path = os.path.join(folder, "result.step")
-        solid.exportStep(path)
-        forms = [("STEP", Part.read(path))]
-        doc = FreeCAD.newDocument("ReadBack")
-        doc.addObject("Part::Feature", "Result").Shape = solid
-        path = os.path.join(folder, "result.FCStd")
-        doc.saveAs(path)
-        FreeCAD.closeDocument(doc.Name)
-        doc = FreeCAD.openDocument(path)
-        forms.append(("FCStd", doc.getObject("Result").Shape.copy()))
-        FreeCAD.closeDocument(doc.Name)
+        forms = [(form, shapes.read_back(solid, form, pathlib.Path(folder)))
+                 for form in ("STEP", "FCStd")]
     for form, shape in forms:
         found = checked(shape)
         if not shape.isValid() or kinds(found) - own:

@@ -1332,3 +1332,21 @@ def off_curve_block():
     edge = _edge_named(s, lambda e: e.BoundBox.XLength < 1e-9 and e.BoundBox.XMin < 1e-9
                        and e.BoundBox.ZLength < 1e-9 and e.BoundBox.ZMin < 1e-9)
     return s, "Face%d" % (top + 1), edge
+
+
+def read_back(shape, form, folder):
+    """shape saved in a FreeCAD document and opened again (form "FCStd"), or written to
+    a STEP or BREP file (exportStep, exportBrep) and read back (Part.read), in the
+    pathlib folder `folder`."""
+    path = str(folder / ("read_back." + form.lower()))
+    if form != "FCStd":
+        (shape.exportStep if form == "STEP" else shape.exportBrep)(path)
+        return Part.read(path)
+    doc = FreeCAD.newDocument("ReadBack")
+    doc.addObject("Part::Feature", "Result").Shape = shape
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    out = doc.getObject("Result").Shape.copy()
+    FreeCAD.closeDocument(doc.Name)
+    return out

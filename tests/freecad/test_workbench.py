@@ -3150,35 +3150,6 @@ def test_saved_document_reopens_and_recomputes(tmp_path):
     FreeCAD.closeDocument(doc.Name)
 
 
-def _read_back(shape, form, folder):
-    """shape saved in a FreeCAD document and opened again (form "FCStd"), or written to
-    a STEP or BREP file (exportStep, exportBrep) and read back (Part.read)."""
-    path = str(folder / ("read_back." + form.lower()))
-    if form != "FCStd":
-        (shape.exportStep if form == "STEP" else shape.exportBrep)(path)
-        return Part.read(path)
-    doc = FreeCAD.newDocument("ReadBack")
-    doc.addObject("Part::Feature", "Result").Shape = shape
-    doc.saveAs(path)
-    FreeCAD.closeDocument(doc.Name)
-    doc = FreeCAD.openDocument(path)
-    out = doc.getObject("Result").Shape.copy()
-    FreeCAD.closeDocument(doc.Name)
-    return out
-
-
-def _off_faces(shape, e, n=201):
-    """How far edge e's curve lies from its curve on each face of `shape` along it, at
-    most, at n points."""
-    out = 0.0
-    for f in shape.ancestorsOfType(e, Part.Face):
-        c = f.curveOnSurface(e)[0]
-        for t in np.linspace(e.FirstParameter, e.LastParameter, n):
-            uv = c.value(t)
-            out = max(out, (e.valueAt(t) - f.Surface.value(uv.x, uv.y)).Length)
-    return out
-
-
 def test_a_document_keeps_a_fillet_as_checked_and_files_may_not(tmp_path):
     """FreeCAD 0.20 saves a document's shapes as BREP text with a fixed count of
     decimals (15 for an edge's range), so a fillet saved and opened again passes the
@@ -3204,19 +3175,19 @@ def test_a_document_keeps_a_fillet_as_checked_and_files_may_not(tmp_path):
     assert assembly._input_only_c0(block, c0)
     for solid in (one, thin, corners):
         assert bc.problems(solid) is None
-        assert bc.problems(_read_back(solid, "FCStd", tmp_path)) is None
-    assert bc.problems(_read_back(block, "FCStd", tmp_path)) == c0
+        assert bc.problems(shapes.read_back(solid, "FCStd", tmp_path)) is None
+    assert bc.problems(shapes.read_back(block, "FCStd", tmp_path)) == c0
     for form in ("STEP", "BREP"):
-        assert bc.problems(_read_back(one, form, tmp_path)) is None
-    assert "Invalid range" in bc.problems(_read_back(thin, "BREP", tmp_path))
-    assert "InvalidCurveOnSurface" in bc.problems(_read_back(block, "BREP", tmp_path))
+        assert bc.problems(shapes.read_back(one, form, tmp_path)) is None
+    assert "Invalid range" in bc.problems(shapes.read_back(thin, "BREP", tmp_path))
+    assert "InvalidCurveOnSurface" in bc.problems(shapes.read_back(block, "BREP", tmp_path))
     # the edges whose curve lies off a face's curve of it by more than OCCT's least
-    # tolerance (1e-7), at 201 points: the seams of the 8 fillings, 3 each
+    # tolerance (1e-7): the seams of the 8 fillings, 3 each
     plates = [corners.getElement(c["face"]) for c in rep["corner_patches"]]
-    off = [e for e in corners.Edges if _off_faces(corners, e) > 1e-7]
+    off = [e for e in corners.Edges if recut.pcurve_gap(e) > 1e-7]
     assert len(off) == 8 * 3
     assert all(any(e.isSame(x) for f in plates for x in f.Edges) for e in off)
-    found = bc.problems(_read_back(corners, "STEP", tmp_path))
+    found = bc.problems(shapes.read_back(corners, "STEP", tmp_path))
     seams = re.fullmatch(r"Error in Edge: BOPAlgo_InvalidCurveOnSurface \((\d+)\); "
                          r"Error in Face: BOPAlgo_InvalidCurveOnSurface \((\d+)\)", found)
     assert seams and seams[1] == seams[2] and 1 <= int(seams[1]) <= len(off), found

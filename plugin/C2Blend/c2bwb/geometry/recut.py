@@ -884,15 +884,23 @@ def update_tolerances(edges, fuzzy):
         if e.Degenerated:  # a pole: no 3D curve to compare with
             continue
         pcurves = _pcurves(e)
-        worst = 0.0
-        for c2, surf, place, a, b in pcurves:
-            for t in _samples(a, b, (c2, e.Curve)):
-                worst = max(worst, (_on(surf, place, c2.value(t)) - e.valueAt(t)).Length)
+        worst = pcurve_gap(e, pcurves)
         if 2.0 * worst > e.Tolerance:
             e.fixTolerance(2.0 * worst)
         for v, gap in _vertex_gap(e, pcurves):
             if 2.0 * gap > v.Tolerance and gap <= fuzzy:
                 v.fixTolerance(2.0 * gap)
+
+
+def pcurve_gap(edge, pcurves=None):
+    """The largest distance between edge's 3D curve and its curves on the faces it
+    bounds (`pcurves`, _pcurves(edge) when None), in model units, sampled as
+    update_tolerances says (_samples). The edge must have a 3D curve."""
+    worst = 0.0
+    for c2, surf, place, a, b in _pcurves(edge) if pcurves is None else pcurves:
+        for t in _samples(a, b, (c2, edge.Curve)):
+            worst = max(worst, (_on(surf, place, c2.value(t)) - edge.valueAt(t)).Length)
+    return worst
 
 
 def _pcurves(edge):
