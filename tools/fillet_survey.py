@@ -565,10 +565,12 @@ def tried(what, s, edges, r, read_back=False):
         theirs = read_back_faults(s.makeFillet(r, [s.getElement(e) if isinstance(e, str)
                                                    else e for e in edges])) if faults else []
         for form, found in faults:
-            print("%s, %d edge(s), R=%g (%d corners filled, %d seams): read back from %s: "
-                  "%s; OCCT's own fillet: %s"
+            print("%s, %d edge(s), R=%g (%d corners filled, %d seams; the report's "
+                  "exchange line: %d edges, OCCT's %d): read back from %s: %s; OCCT's own "
+                  "fillet: %s"
                   % (what, len(edges), r, len(corners), sum(c["edges"] for c in corners),
-                     form, found, dict(theirs).get(form, "no new findings")))
+                     rep["exchange"]["edges"], rep["exchange"]["occt_edges"], form, found,
+                     dict(theirs).get(form, "no new findings")))
         outcome += "; read back: no new findings" if not faults else \
             "; read back from %s: new findings%s" % (
                 " and ".join(form for form, _ in faults),

@@ -3162,7 +3162,8 @@ def test_a_document_keeps_a_fillet_as_checked_and_files_may_not(tmp_path):
     edges filleted, whose seam with each of its 3 blends is about 1e-6 off
     (corners.py), then has curves off its face on those seams (all 24, seen), the only
     edges whose curves lie apart by more than OCCT's least tolerance. A box with one
-    edge filleted reads back from either file as checked."""
+    edge filleted reads back from either file as checked. The fillet report counts the
+    edges whose curves lie apart (its "exchange" line)."""
     box = shapes.box()
     one = C2Blend.fillet(box, ["Edge1"], 2.0)
     thin, rep = C2Blend.fillet_report(box, ["Edge1"], 2.0, tension=1e-6)
@@ -3182,15 +3183,21 @@ def test_a_document_keeps_a_fillet_as_checked_and_files_may_not(tmp_path):
     assert "Invalid range" in bc.problems(shapes.read_back(thin, "BREP", tmp_path))
     assert "InvalidCurveOnSurface" in bc.problems(shapes.read_back(block, "BREP", tmp_path))
     # the edges whose curve lies off a face's curve of it by more than OCCT's least
-    # tolerance (1e-7): the seams of the 8 fillings, 3 each
+    # tolerance (1e-7): the seams of the 8 fillings, 3 each; the report counts them and
+    # says what a STEP file may do, where a one-edge fillet has none (nor OCCT's)
     plates = [corners.getElement(c["face"]) for c in rep["corner_patches"]]
     off = [e for e in corners.Edges if recut.pcurve_gap(e) > 1e-7]
-    assert len(off) == 8 * 3
+    assert len(off) == 8 * 3 == rep["exchange"]["edges"]
+    assert 1e-7 < rep["exchange"]["gap"] < 1e-5 and rep["exchange"]["occt_edges"] == 0
+    assert "a STEP file keeps no tolerances" in C2Blend.format_report(rep).splitlines()[-1]
     assert all(any(e.isSame(x) for f in plates for x in f.Edges) for e in off)
     found = bc.problems(shapes.read_back(corners, "STEP", tmp_path))
     seams = re.fullmatch(r"Error in Edge: BOPAlgo_InvalidCurveOnSurface \((\d+)\); "
                          r"Error in Face: BOPAlgo_InvalidCurveOnSurface \((\d+)\)", found)
     assert seams and seams[1] == seams[2] and 1 <= int(seams[1]) <= len(off), found
+    one_rep = C2Blend.fillet_report(box, ["Edge1"], 2.0)[1]
+    assert one_rep["exchange"]["edges"] == one_rep["exchange"]["occt_edges"] == 0
+    assert "STEP" not in C2Blend.format_report(one_rep)
 
 
 def test_c1_and_c3_fillets():
@@ -3214,11 +3221,13 @@ def test_c1_and_c3_fillets():
     assert rep["blends"][0]["closed"] and rep["blends"][0]["fit_deviation"] <= \
         rep["blends"][0]["fit_tolerance"]
     lines = C2Blend.format_report(rep).splitlines()
-    assert len(lines) == 4 and all(": G2 " in ln for ln in lines[:2])
+    assert len(lines) == 5 and all(": G2 " in ln for ln in lines[:2])
     assert lines[2] == "solid: passes BRepCheck and the BOP check"
     assert lines[3].startswith("tolerances: largest vertex %.2g, edge %.2g (OCCT's fillet: "
                                % (max(v.Tolerance for v in solid.Vertexes),
                                   max(e.Tolerance for e in solid.Edges)))
+    assert re.fullmatch(r"exchange: 0 edge\(s\) whose curves lie more than 1e-07 apart on "
+                        r"their faces, the largest gap \S+ \(OCCT's fillet: 0, \S+\)", lines[4])
     with pytest.raises(C2BlendError, match=r"C3 takes 5 shape parameters \(a0, a1, a2, a3, a4\)"):
         C2Blend.fillet(s, [edge], 2.0, continuity="C3", shape_params=(2, 1, 1, 1))
 

@@ -24,6 +24,7 @@ import numbers
 import Part
 
 from ..errors import C2BlendError
+from .recut import EXCHANGE_GAP
 from .surface import Frame, frame_at_point, frame_or_none, angle
 
 TOL_G0 = 1e-6     # model units, and at least the edge tolerance
@@ -329,4 +330,12 @@ def format_report(rep):
         t = rep["tolerance"]
         lines.append("tolerances: largest vertex %.2g, edge %.2g (OCCT's fillet: %.2g, %.2g)"
                      % (t["vertex"], t["edge"], t["occt_vertex"], t["occt_edge"]))
+    if "exchange" in rep:
+        x = rep["exchange"]
+        lines.append("exchange: %d edge(s) whose curves lie more than %.0e apart on their "
+                     "faces, the largest gap %.2g (OCCT's fillet: %d, %.2g)"
+                     % (x["edges"], EXCHANGE_GAP, x["gap"], x["occt_edges"], x["occt_gap"]))
+        if x["edges"]:
+            lines[-1] += ("; a STEP file keeps no tolerances, so OCCT's BOP check of the "
+                          "solid read back from one may find those edges off their faces")
     return lines

@@ -112,17 +112,21 @@ def _tangent_ends(shape, label, edges):
             "to a point: a blend needs two trimlines apart" % ", ".join(out))
 
 
-def _measure(solid, blended, corners):
+def _measure(solid, blended, corners, result):
     """The continuity measures of a filleted solid for the report: {"trimlines",
     "mitres", "junctions", "corner_patches": [check per trimline, shared edge or filled
-    corner patch (rollingball.CornerPatch of `corners`)]}; blended: the blends in it."""
+    corner patch (rollingball.CornerPatch of `corners`)], "exchange": the edges of the
+    solid, and of `result` (OCCT's fillet) with keys "occt_...", whose curves lie apart
+    (recut.curve_gaps)}; blended: the blends in it."""
     faces = [(b, assembly.blend_face(solid, b)) for b in blended]
     scales = {}  # each face's curvature scale, sampled once for all the checks
     return {"trimlines": _trimline_checks(solid, faces, scales),
             "mitres": _shared_edge_checks(solid, faces, False, scales),
             "junctions": _shared_edge_checks(solid, faces, True, scales),
             "corner_patches": [_corner_check(solid, p, scales) for p in corners]
-            if blended else []}
+            if blended else [],
+            "exchange": {**recut.curve_gaps(solid),
+                         **{"occt_" + k: x for k, x in recut.curve_gaps(result).items()}}}
 
 
 def _trimline_checks(solid, faces, scales):
@@ -350,7 +354,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
     def measure(solid):
         t = time.perf_counter()
         try:
-            checks = _measure(solid, blended, filled)
+            checks = _measure(solid, blended, filled, result)
         except Exception:  # noqa: BLE001 - measured again once the solid is checked,
             return  # whose findings then explain it first
         measured.update(solid=solid, checks=checks, seconds=time.perf_counter() - t)
@@ -385,7 +389,7 @@ def _fillet_solid(shape, names, radius, continuity, shape_params, tension, label
     t_assemble = time.perf_counter()
     overlapped = measured.get("seconds", 0.0) if measured.get("solid") is solid else 0.0
     if not overlapped:  # not measured while the BOP check ran
-        measured.update(solid=solid, checks=_measure(solid, blended, filled))
+        measured.update(solid=solid, checks=_measure(solid, blended, filled, result))
         measured["seconds"] = time.perf_counter() - t_assemble
     checks, corner_checks = measured["checks"]["trimlines"], measured["checks"]["corner_patches"]
     for p in patches:  # not filled: OCCT's corner patch, or its face between two fillets

@@ -903,6 +903,22 @@ def pcurve_gap(edge, pcurves=None):
     return worst
 
 
+# model units: OCCT's least tolerance (Precision::Confusion()). A STEP file keeps no
+# tolerances; OCCT's reader gives each edge the deviation it samples between its curves,
+# at least this, and its BOP check's finer search can exceed that where the curves lie
+# further apart (a plate filling's seams, about 1e-6 off its blends: corners.py).
+EXCHANGE_GAP = 1e-7
+
+
+def curve_gaps(shape):
+    """{"edges": how many of shape's edges have curves further apart than EXCHANGE_GAP
+    (pcurve_gap), "gap": the largest pcurve_gap of its edges (model units)}: the edges
+    OCCT's BOP check may find off their faces in the shape read back from a STEP file.
+    Degenerated edges (poles) have no 3D curve and are left out."""
+    gaps = [pcurve_gap(e) for e in shape.Edges if not e.Degenerated]
+    return {"edges": sum(g > EXCHANGE_GAP for g in gaps), "gap": max(gaps, default=0.0)}
+
+
 def _pcurves(edge):
     """[(2D curve, surface, placement or None, first, last)] of each of edge's curves
     on the faces it bounds."""

@@ -123,6 +123,8 @@ def fillet_each(parts, names, label, fillet_one, check_one):
     merged["volume"] = result.Volume
     merged["tolerance"] = {k: max(rep["tolerance"][k] for _, rep in reports)
                            for k in first["tolerance"]}
+    merged["exchange"] = {k: (max if k.endswith("gap") else sum)(
+        rep["exchange"][k] for _, rep in reports) for k in first["exchange"]}
     merged["occt_volume"] = untouched + sum(rep["occt_volume"] for _, rep in reports)
     merged["occt_seconds"] = sum(rep["occt_seconds"] for _, rep in reports)
     merged["stage_seconds"] = {k: sum(rep["stage_seconds"][k] for _, rep in reports)
