@@ -583,8 +583,12 @@ def read_back_faults(solid):
     """[(form, findings)]: each form ("STEP", "FCStd") that `solid`, written to a STEP
     file (exportStep) or saved in a FreeCAD document and read back, fails the validity
     checks in: isValid(), or a kind of finding of the BOP check (bopcheck.problems) that
-    the solid itself has not, with the findings."""
+    the solid itself has not, with the findings. OCCT's check lists a curve off its face
+    once per (edge, face) pair, so an edge off both its faces counts twice: the findings
+    end with how many distinct edges of the shape read back have curves further apart
+    (recut.pcurve_gap, sampled) than their tolerance."""
     from c2bwb.geometry import bopcheck as bc
+    from c2bwb.geometry import recut
     def checked(shape):  # the findings, or why the check did not finish
         try:
             return bc.problems(shape)
@@ -600,7 +604,11 @@ def read_back_faults(solid):
     for form, shape in forms:
         found = checked(shape)
         if not shape.isValid() or kinds(found) - own:
-            out.append((form, ("not valid; " if not shape.isValid() else "") + str(found)))
+            apart = sum(recut.pcurve_gap(e) > e.Tolerance for e in shape.Edges
+                        if not e.Degenerated)
+            out.append((form, ("not valid; " if not shape.isValid() else "") + str(found)
+                        + " [%d distinct edge(s) whose curves lie further apart than their "
+                        "tolerance]" % apart))
     return out
 
 
